@@ -1,0 +1,21 @@
+#pragma once
+// Hierarchical view-frustum culling over a kd-tree: the baseline every occlusion module must beat.
+#include <osgVis/core/KdTree.h>
+#include <osgVis/core/VisibilityModule.h>
+
+namespace osgVis::core
+{
+class FrustumModule : public VisibilityModule
+{
+public:
+    const char* name() const override { return "frustum"; }
+    void setScene(const Scene& scene) override;
+    // Never culls a visible object: keeps every object whose bounds are not entirely outside one
+    // frustum plane.
+    void cull(const View& view, VisibleSet& visible) override;
+
+private:
+    KdTree _tree;
+    std::vector<std::uint32_t> _stack; // reused per query: no allocation after warm-up
+};
+} // namespace osgVis::core

@@ -1,0 +1,41 @@
+#pragma once
+// Modules composed in sequence: each stage only refines the previous stage's answer.
+#include <osgVis/core/VisibilityModule.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace osgVis::core
+{
+struct StageTiming
+{
+    std::string module;
+    double milliseconds = 0.0;
+    std::size_t visibleAfter = 0;
+};
+
+class ModuleChain
+{
+public:
+    void add(std::unique_ptr<VisibilityModule> module);
+    bool empty() const { return _modules.empty(); }
+    std::size_t size() const { return _modules.size(); }
+    VisibilityModule& module(std::size_t i) { return *_modules[i]; }
+    // "frustum,octree"
+    std::string name() const;
+    bool approximate() const;
+
+    void setScene(const Scene& scene);
+    void sceneChanged(const SceneChange& change);
+    // Starts from every object of the scene and lets each stage refine. Never culls a visible object
+    // unless one of the stages is approximate.
+    void cull(const View& view, VisibleSet& visible);
+    const std::vector<StageTiming>& lastTimings() const { return _timings; }
+
+private:
+    std::vector<std::unique_ptr<VisibilityModule>> _modules;
+    std::vector<StageTiming> _timings;
+    const Scene* _scene = nullptr;
+};
+} // namespace osgVis::core

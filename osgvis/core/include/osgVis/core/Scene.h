@@ -1,0 +1,79 @@
+#pragma once
+// Renderer-independent scene model: the objects a visibility module culls, the triangles they are
+// made of, occluder candidates, and cells/portals where a modeller stated them.
+#include <osgVis/core/Aabb.h>
+#include <osgVis/core/ConvexPolygon.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace osgVis::core
+{
+using ObjectId = std::uint32_t;
+constexpr ObjectId InvalidObject = ~ObjectId(0);
+
+struct Triangle
+{
+    Vec3f a, b, c;
+};
+
+enum ObjectFlags : std::uint32_t
+{
+    OBJECT_NONE = 0,
+    // Moves or changes: never an occluder, never culled by precomputed data.
+    OBJECT_DYNAMIC = 1u << 0,
+    // Stated occluder (osgVis::Occluder marker above it): its polygons are occluder candidates.
+    OBJECT_OCCLUDER = 1u << 1,
+    // Blended / transparent: draws but never occludes.
+    OBJECT_TRANSPARENT = 1u << 2,
+    // Bounds unknown or not finite (NaN/inf geometry): no module may cull it; ModuleChain keeps it.
+    OBJECT_ALWAYS_VISIBLE = 1u << 3,
+};
+
+struct SceneObject
+{
+    ObjectId id = InvalidObject; // equals the object's index in Scene::objects
+    Aabb bounds;                 // world space
+    std::uint32_t triangleCount = 0;
+    std::uint32_t firstTriangle = 0; // into Scene::triangles; triangleCount entries (may be 0 if not kept)
+    std::uint32_t flags = OBJECT_NONE;
+    std::string name; // for reports and debugging only
+};
+
+// A polygon that may hide what lies behind it (world space). `owner` is the object it belongs to,
+// or InvalidObject for a stand-alone occluder stated by a marker node.
+struct OccluderCandidate
+{
+    ConvexPolygon polygon;
+    ObjectId owner = InvalidObject;
+};
+
+struct Cell
+{
+    std::uint32_t id = 0;
+    Aabb bounds;
+    std::string name;
+};
+
+struct Portal
+{
+    ConvexPolygon polygon;
+    std::uint32_t cellA = 0, cellB = 0;
+};
+
+struct Scene
+{
+    std::vector<SceneObject> objects;
+    std::vector<Triangle> triangles; // may be empty when the source keeps no triangles
+    std::vector<OccluderCandidate> occluders;
+    std::vector<Cell> cells;
+    std::vector<Portal> portals;
+
+    Aabb bounds() const;
+    std::uint64_t totalTriangles() const;
+    // Adds an object with the next id; returns that id.
+    ObjectId addObject(const Aabb& bounds, std::uint32_t triangleCount, std::uint32_t flags = OBJECT_NONE,
+                       std::string name = {});
+};
+} // namespace osgVis::core

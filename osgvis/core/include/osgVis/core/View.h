@@ -1,0 +1,23 @@
+#pragma once
+// One viewpoint as a renderer hands it to the visibility core.
+#include <osgVis/core/Frustum.h>
+
+#include <cstdint>
+
+namespace osgVis::core
+{
+struct View
+{
+    Vec3 eye{0.0};
+    Mat4 viewMatrix{1.0};       // world → eye (GL convention, looking down -z)
+    Mat4 projectionMatrix{1.0}; // eye → clip
+    Frustum frustum;            // derived from projection * view by makeView
+    double time = 0.0;          // walk time in seconds (never the wall clock)
+    std::uint32_t viewportWidth = 1280, viewportHeight = 1024;
+    bool orthographic = false;
+};
+
+// Fills eye, frustum and orthographic from the two matrices.
+View makeView(const Mat4& viewMatrix, const Mat4& projectionMatrix, double time = 0.0,
+              std::uint32_t viewportWidth = 1280, std::uint32_t viewportHeight = 1024);
+} // namespace osgVis::core

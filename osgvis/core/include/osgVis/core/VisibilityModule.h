@@ -1,0 +1,45 @@
+#pragma once
+// The visibility API between a renderer and a visibility algorithm: a scene description the module
+// keeps between frames, a view in, a visible set out, notification when the scene changes.
+#include <osgVis/core/View.h>
+#include <osgVis/core/VisibleSet.h>
+
+#include <memory>
+#include <vector>
+
+namespace osgVis::core
+{
+struct SceneChange
+{
+    enum class Kind
+    {
+        Inserted, // objects appended to the scene
+        Moved,    // bounds / triangles of objects changed
+        Removed,  // objects no longer drawn (their ids stay valid but must not be reported)
+    };
+    Kind kind = Kind::Moved;
+    std::vector<ObjectId> objects;
+};
+
+class VisibilityModule
+{
+public:
+    virtual ~VisibilityModule() = default;
+    virtual const char* name() const = 0;
+    // True when the module may cull visible objects (only modes named `approx`).
+    virtual bool approximate() const { return false; }
+
+    // Build phase: may allocate and take long. The scene outlives the module or the next setScene.
+    virtual void setScene(const Scene& scene) = 0;
+    // The scene (same object as given to setScene) changed; the default rebuilds.
+    virtual void sceneChanged(const SceneChange& change);
+
+    // Query phase. `visible` arrives holding the candidates (all objects, or what earlier modules
+    // of a chain kept) and leaves holding a subset of them.
+    // Guarantee (non-approximate modules): never culls a visible object; may keep hidden ones.
+    virtual void cull(const View& view, VisibleSet& visible) = 0;
+
+protected:
+    const Scene* _scene = nullptr;
+};
+} // namespace osgVis::core
