@@ -19,10 +19,12 @@ public:
         std::uint32_t firstItem = 0; // range into items(), covering the whole subtree
         std::uint32_t itemCount = 0;
         std::uint8_t axis = 0;
+        double split = 0.0;          // left items have centroid[axis] <= split <= right items' centroids
         bool leaf() const { return left == 0 && right == 0; }
     };
 
-    // Items are indices into `boxes`; empty boxes are left out.
+    // Items are indices into `boxes`; empty and non-finite boxes are left out (callers keep those
+    // objects: nothing is known about where they are).
     void build(const std::vector<Aabb>& boxes, std::uint32_t maxLeafItems = 4);
     bool empty() const { return _nodes.empty(); }
     const std::vector<Node>& nodes() const { return _nodes; }

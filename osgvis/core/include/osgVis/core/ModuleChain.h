@@ -27,9 +27,12 @@ public:
     bool approximate() const;
 
     void setScene(const Scene& scene);
+    // Forwards to every stage; also remembers Removed objects (never reported again until an
+    // Inserted change names them).
     void sceneChanged(const SceneChange& change);
-    // Starts from every object of the scene and lets each stage refine. Never culls a visible object
-    // unless one of the stages is approximate.
+    // Starts from every object of the scene (less those reported Removed) and lets each stage refine;
+    // finally re-adds objects flagged OBJECT_ALWAYS_VISIBLE. Never culls a visible object unless one
+    // of the stages is approximate.
     void cull(const View& view, VisibleSet& visible);
     const std::vector<StageTiming>& lastTimings() const { return _timings; }
 
@@ -37,5 +40,6 @@ private:
     std::vector<std::unique_ptr<VisibilityModule>> _modules;
     std::vector<StageTiming> _timings;
     const Scene* _scene = nullptr;
+    std::vector<bool> _removed; // per object: reported Removed and not re-inserted since
 };
 } // namespace osgVis::core

@@ -1,0 +1,16 @@
+#include <osgVis/core/Aabb.h>
+
+#include <cmath>
+
+namespace osgVis::core
+{
+bool Aabb::finite() const
+{
+    for (int i = 0; i < 3; ++i)
+    {
+        if (!std::isfinite(min[i]) || !std::isfinite(max[i]))
+            return false;
+    }
+    return true;
+}
+} // namespace osgVis::core

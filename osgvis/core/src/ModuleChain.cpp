@@ -1,0 +1,98 @@
+#include <osgVis/core/ModuleChain.h>
+
+#include <chrono>
+
+namespace osgVis::core
+{
+void ModuleChain::add(std::unique_ptr<VisibilityModule> module)
+{
+    if (_scene)
+        module->setScene(*_scene);
+    _modules.push_back(std::move(module));
+}
+
+std::string ModuleChain::name() const
+{
+    std::string result;
+    for (const auto& m : _modules)
+    {
+        if (!result.empty())
+            result += ',';
+        result += m->name();
+    }
+    return result;
+}
+
+bool ModuleChain::approximate() const
+{
+    for (const auto& m : _modules)
+    {
+        if (m->approximate())
+            return true;
+    }
+    return false;
+}
+
+void ModuleChain::setScene(const Scene& scene)
+{
+    _scene = &scene;
+    _removed.assign(scene.objects.size(), false);
+    for (auto& m : _modules)
+        m->setScene(scene);
+}
+
+void ModuleChain::sceneChanged(const SceneChange& change)
+{
+    if (!_scene)
+        return;
+    _removed.resize(_scene->objects.size(), false);
+    for (ObjectId id : change.objects)
+    {
+        if (id >= _removed.size())
+            continue;
+        if (change.kind == SceneChange::Kind::Removed)
+            _removed[id] = true;
+        else if (change.kind == SceneChange::Kind::Inserted)
+            _removed[id] = false;
+    }
+    for (auto& m : _modules)
+        m->sceneChanged(change);
+}
+
+void ModuleChain::cull(const View& view, VisibleSet& visible)
+{
+    using Clock = std::chrono::steady_clock;
+    if (!_scene)
+    {
+        visible.reset(0);
+        _timings.clear();
+        return;
+    }
+    const std::vector<SceneObject>& objects = _scene->objects;
+    visible.reset(objects.size(), true);
+    for (std::size_t id = 0; id < _removed.size() && id < objects.size(); ++id)
+    {
+        if (_removed[id])
+            visible.clear(static_cast<ObjectId>(id));
+    }
+
+    _timings.resize(_modules.size());
+    for (std::size_t i = 0; i < _modules.size(); ++i)
+    {
+        const Clock::time_point start = Clock::now();
+        _modules[i]->cull(view, visible);
+        const Clock::time_point end = Clock::now();
+        StageTiming& t = _timings[i];
+        t.module = _modules[i]->name();
+        t.milliseconds = std::chrono::duration<double, std::milli>(end - start).count();
+        t.visibleAfter = visible.count();
+    }
+
+    for (const SceneObject& o : objects)
+    {
+        const bool removed = o.id < _removed.size() && _removed[o.id];
+        if ((o.flags & OBJECT_ALWAYS_VISIBLE) && !removed && o.id < objects.size())
+            visible.set(o.id);
+    }
+}
+} // namespace osgVis::core

@@ -1,0 +1,108 @@
+#include <osgVis/core/ModuleRegistry.h>
+
+#include <osgVis/core/FrustumModule.h>
+
+#include <map>
+#include <mutex>
+
+namespace osgVis::core
+{
+namespace
+{
+struct Registry
+{
+    Registry() { factories["frustum"] = [] { return std::make_unique<FrustumModule>(); }; }
+
+    std::mutex mutex;
+    std::map<std::string, ModuleFactory> factories;
+};
+
+// note: function-local static, so modules may register from static initializers of other
+// libraries in any order.
+Registry& registry()
+{
+    static Registry r;
+    return r;
+}
+
+std::string joined(const std::vector<std::string>& names)
+{
+    std::string out;
+    for (const std::string& n : names)
+    {
+        if (!out.empty())
+            out += ", ";
+        out += n;
+    }
+    return out;
+}
+
+std::string trimmed(const std::string& s)
+{
+    const char* space = " \t\r\n";
+    const std::size_t first = s.find_first_not_of(space);
+    if (first == std::string::npos)
+        return {};
+    const std::size_t last = s.find_last_not_of(space);
+    return s.substr(first, last - first + 1);
+}
+} // namespace
+
+std::vector<std::string> moduleNames()
+{
+    Registry& r = registry();
+    std::lock_guard<std::mutex> lock(r.mutex);
+    std::vector<std::string> names;
+    for (const auto& entry : r.factories)
+        names.push_back(entry.first); // std::map keeps them sorted
+    return names;
+}
+
+bool hasModule(const std::string& name)
+{
+    Registry& r = registry();
+    std::lock_guard<std::mutex> lock(r.mutex);
+    return r.factories.count(name) != 0;
+}
+
+void registerModule(const std::string& name, ModuleFactory factory)
+{
+    Registry& r = registry();
+    std::lock_guard<std::mutex> lock(r.mutex);
+    r.factories[name] = std::move(factory);
+}
+
+std::unique_ptr<VisibilityModule> createModule(const std::string& name)
+{
+    ModuleFactory factory;
+    {
+        Registry& r = registry();
+        std::lock_guard<std::mutex> lock(r.mutex);
+        const auto found = r.factories.find(name);
+        if (found != r.factories.end())
+            factory = found->second;
+    }
+    if (!factory)
+        throw UnknownModeError("unknown mode '" + name + "' (known: " + joined(moduleNames()) + ")");
+    return factory();
+}
+
+ModuleChain createChain(const std::string& names)
+{
+    ModuleChain chain;
+    std::size_t start = 0;
+    while (true)
+    {
+        const std::size_t comma = names.find(',', start);
+        const std::string name =
+            trimmed(names.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (name.empty())
+            throw UnknownModeError("empty mode name in '" + names + "' (known: " + joined(moduleNames()) + ")");
+        chain.add(createModule(name));
+        if (comma == std::string::npos)
+            break;
+        start = comma + 1;
+    }
+    return chain;
+}
+} // namespace osgVis::core
