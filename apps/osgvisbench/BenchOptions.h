@@ -1,0 +1,37 @@
+#pragma once
+// Command line of osgvisbench: what scene, which walk, which modes, at what size, and where the
+// JSON goes. Parsing only: nothing here loads a file or touches GL.
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace osgVis::bench
+{
+// Bad command line: main prints the message and the usage, and exits with code 2.
+struct UsageError : std::runtime_error
+{
+    using std::runtime_error::runtime_error;
+};
+
+struct BenchOptions
+{
+    std::string sceneFile;            // --scene FILE (any format osgDB reads)
+    std::string generateKind;         // --generate office|city|tetra (instead of --scene)
+    std::uint64_t triangles = 100000; // --triangles N, with --generate
+    std::uint32_t seed = 1;           // --seed S, with --generate
+    std::string walkFile;             // --walk FILE; empty: FILE.walk beside the scene, else automatic
+    std::vector<std::string> modes;   // --modes a,b,c (a module chain is written a+b)
+    unsigned views = 0;               // --views N: subsample the walk evenly; 0 keeps every key
+    unsigned width = 0, height = 0;   // --size WxH; 0: the walk's size
+    std::string jsonFile;             // --json OUT.json
+    unsigned supersample = 2;         // --supersample K: the oracle's extra check at K× resolution
+    bool help = false;                // --help
+    std::string commandLine;          // argv joined, recorded in the JSON
+};
+
+// Throws UsageError naming the offending argument.
+BenchOptions parseBenchOptions(int argc, char** argv);
+std::string benchUsage();
+} // namespace osgVis::bench

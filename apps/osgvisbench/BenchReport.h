@@ -1,0 +1,49 @@
+#pragma once
+// What a bench run found: the run's description and one row of metrics per mode (DESIGN.md's
+// metrics table; exact definitions in docs/benchmark.md). Unset optionals are metrics with no
+// meaning in this run (a zero denominator, a baseline mode not run) and print as null.
+#include "BenchMode.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace osgVis::bench
+{
+struct ModeMetrics
+{
+    std::uint64_t falseInvisible = 0;        // Σ_v |E(v) \ S(v)|
+    std::optional<double> efficacy;          // triangle-weighted, over all views
+    std::optional<double> efficacyObjects;   // object-count-weighted
+    std::optional<double> occlusionEfficacy; // triangle-weighted, exact-invisible objects in the frustum
+    std::optional<double> overestimation;    // Σ tri(S) / Σ tri(E)
+    std::optional<double> drawnFraction;     // Σ tri(S) / (views × tri(scene))
+    std::optional<double> cullMsMedian;
+    std::optional<double> cullMsP99;
+    std::optional<double> fps;
+    std::optional<double> speedupVsOsg; // fps / fps(osg)
+    std::optional<double> fpsVsExact;   // fps / fps(exact)
+};
+
+struct ModeResult
+{
+    BenchMode mode;
+    ModeMetrics metrics;
+    std::uint32_t viewsWithFalseInvisible = 0;
+};
+
+struct BenchReport
+{
+    std::string scene;
+    std::uint64_t triangles = 0;
+    std::size_t objects = 0;
+    std::size_t views = 0;
+    unsigned width = 0, height = 0;
+    std::string command;
+    unsigned supersample = 1;
+    std::vector<std::uint32_t> viewsWithSupersampleExtras;
+    std::uint64_t supersampleExtras = 0;
+    std::vector<ModeResult> modes;
+};
+} // namespace osgVis::bench

@@ -1,0 +1,95 @@
+#include "BenchRun.h"
+
+#include "../osgvisviewer/SceneSource.h"
+#include "BenchViewer.h"
+#include "EmittedObjects.h"
+#include "ExactReplay.h"
+#include "Metrics.h"
+#include "ModeGraph.h"
+#include "ModePass.h"
+#include "OracleReference.h"
+
+#include <iostream>
+#include <memory>
+
+namespace osgVis::bench
+{
+namespace
+{
+viewer::ViewerScene loadScene(const BenchOptions& options)
+{
+    viewer::ViewerOptions source;
+    source.scenePath = options.sceneFile;
+    source.generateKind = options.generateKind;
+    source.triangles = options.triangles;
+    source.seed = options.seed;
+    source.walkPath = options.walkFile;
+    source.width = options.width;
+    source.height = options.height;
+    return viewer::loadViewerScene(source);
+}
+
+bool runsMode(const std::vector<BenchMode>& modes, BenchMode::Kind kind)
+{
+    for (const BenchMode& mode : modes)
+        if (mode.kind == kind)
+            return true;
+    return false;
+}
+} // namespace
+
+BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& modes)
+{
+    const viewer::ViewerScene scene = loadScene(options);
+    const core::Walk& walk = scene.walk;
+    const std::vector<BenchView> views = makeBenchViews(walk, options.views);
+    const core::Scene& model = scene.objects->scene;
+    std::cerr << "scene: " << scene.name << " (" << model.objects.size() << " objects, " << model.totalTriangles()
+              << " triangles), walk: " << scene.walkSource << ", " << views.size() << " views at " << walk.width << "x"
+              << walk.height << std::endl;
+
+    const OracleReference reference =
+        computeOracleReference(*scene.model, *scene.objects, views, walk.width, walk.height, options.supersample);
+
+    BenchReport report;
+    report.scene = scene.name;
+    report.triangles = model.totalTriangles();
+    report.objects = model.objects.size();
+    report.views = views.size();
+    report.width = walk.width;
+    report.height = walk.height;
+    report.command = options.commandLine;
+    report.supersample = reference.supersample;
+    report.viewsWithSupersampleExtras = reference.viewsWithSupersampleExtras;
+    report.supersampleExtras = reference.supersampleExtras;
+
+    std::unique_ptr<ExactReplay> replay;
+    if (runsMode(modes, BenchMode::Kind::Exact))
+        replay = std::make_unique<ExactReplay>(reference);
+
+    BenchViewer viewer(walk.width, walk.height, walk.projection, *scene.model);
+    EmittedObjects emittedObjects(*scene.objects);
+    for (const BenchMode& mode : modes)
+    {
+        osg::ref_ptr<osg::Node> graph = buildModeGraph(mode, *scene.model, *scene.objects);
+        viewer.setSceneData(graph.get());
+        const PassResult pass = renderModePass(mode.name, viewer, views, emittedObjects, model.objects.size(),
+                                               [&](std::size_t v)
+                                               {
+                                                   if (mode.kind == BenchMode::Kind::Exact)
+                                                       replay->setCurrentView(v);
+                                               });
+        viewer.setSceneData(nullptr);
+        if (pass.unmatchedLeaves != 0)
+            std::cerr << "osgvisbench: warning: " << mode.name << ": " << pass.unmatchedLeaves
+                      << " drawn leaves matched no instance of their drawable" << std::endl;
+        report.modes.push_back(measureMode(mode, model, reference, pass));
+    }
+    if (replay && replay->mismatchedQueries() != 0)
+        std::cerr << "osgvisbench: warning: exact: the VisibilityGroup numbered objects differently from the "
+                     "bench's extraction in "
+                  << replay->mismatchedQueries() << " queries; those views drew everything" << std::endl;
+    relateToBaselines(report.modes);
+    return report;
+}
+} // namespace osgVis::bench

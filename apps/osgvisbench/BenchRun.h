@@ -1,0 +1,14 @@
+#pragma once
+// One bench run from a parsed command line to a report: load the scene and walk, run the oracle,
+// render every mode's pass in one viewer, measure.
+#include "BenchMode.h"
+#include "BenchOptions.h"
+#include "BenchReport.h"
+
+#include <vector>
+
+namespace osgVis::bench
+{
+// Throws (viewer::SceneError, ViewerError, std::exception) with a message fit for the user.
+BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& modes);
+} // namespace osgVis::bench

@@ -1,0 +1,102 @@
+#include "BenchViewer.h"
+
+#include "../osgvisviewer/CameraSetup.h"
+
+#include <osg/GL>
+#include <osgUtil/GLObjectsVisitor>
+#include <osgViewer/Renderer>
+
+#include <chrono>
+#include <limits>
+#include <string>
+
+namespace osgVis::bench
+{
+namespace
+{
+// note: a final-draw callback, not a post-draw one: in OSG 3.6.5 a camera with a post-draw callback
+// makes every osg::OcclusionQueryNode silently skip its queries, which would falsify `osg-oq`.
+struct FinishFrame : osg::Camera::DrawCallback
+{
+    void operator()(osg::RenderInfo&) const override { glFinish(); }
+};
+
+osg::ref_ptr<osg::GraphicsContext> createPbuffer(unsigned width, unsigned height)
+{
+    osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
+    traits->x = 0;
+    traits->y = 0;
+    traits->width = int(width);
+    traits->height = int(height);
+    traits->red = traits->green = traits->blue = traits->alpha = 8;
+    traits->depth = 24;
+    traits->windowDecoration = false;
+    traits->doubleBuffer = false;
+    traits->pbuffer = true;
+    traits->sharedContext = nullptr;
+    osg::ref_ptr<osg::GraphicsContext> context = osg::GraphicsContext::createGraphicsContext(traits.get());
+    if (!context || !context->valid())
+        throw ViewerError("cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
+                          " OpenGL pbuffer (no X display? run under xvfb-run)");
+    return context;
+}
+} // namespace
+
+BenchViewer::BenchViewer(unsigned width, unsigned height, const core::WalkProjection& projection, osg::Node& model)
+    : _viewer(new osgViewer::Viewer)
+{
+    _viewer->setThreadingModel(osgViewer::Viewer::SingleThreaded);
+    _viewer->setKeyEventSetsDone(0);
+    _viewer->setQuitEventSetsDone(false);
+
+    osg::Camera* camera = _viewer->getCamera();
+    camera->setGraphicsContext(createPbuffer(width, height).get());
+    camera->setViewport(0, 0, int(width), int(height));
+    camera->setDrawBuffer(GL_FRONT);
+    camera->setReadBuffer(GL_FRONT);
+    camera->setProjectionResizePolicy(osg::Camera::FIXED);
+    viewer::applyWalkProjection(*camera, projection, double(width) / double(height));
+    camera->setFinalDrawCallback(new FinishFrame);
+    camera->getStats()->collectStats("rendering", true);
+
+    _viewer->setRealizeOperation(new osgUtil::GLObjectsOperation(&model));
+    _viewer->realize();
+    if (!_viewer->isRealized())
+        throw ViewerError("the offscreen viewer failed to realize its OpenGL context");
+}
+
+void BenchViewer::setSceneData(osg::Node* scene)
+{
+    _viewer->setSceneData(scene);
+}
+
+BenchViewer::FrameTiming BenchViewer::renderFrame(const BenchView& view)
+{
+    osg::Camera* camera = _viewer->getCamera();
+    camera->setViewMatrix(view.view);
+    camera->setProjectionMatrix(view.projection);
+
+    FrameTiming timing;
+    const auto start = std::chrono::steady_clock::now();
+    // The walk's time stamp is the simulation time: temporal-coherence logic sees walk time, never
+    // the wall clock, so runs are deterministic.
+    _viewer->frame(view.key.time);
+    timing.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    double cullSeconds = 0.0;
+    const unsigned frameNumber = _viewer->getFrameStamp()->getFrameNumber();
+    timing.cullMs = camera->getStats()->getAttribute(frameNumber, "Cull traversal time taken", cullSeconds)
+                        ? cullSeconds * 1000.0
+                        : std::numeric_limits<double>::quiet_NaN();
+    return timing;
+}
+
+const osgUtil::RenderStage& BenchViewer::lastRenderStage() const
+{
+    // note: a single-threaded viewer always culls and draws through the renderer's first SceneView.
+    const auto* renderer = dynamic_cast<const osgViewer::Renderer*>(_viewer->getCamera()->getRenderer());
+    if (!renderer || !renderer->getSceneView(0) || !renderer->getSceneView(0)->getRenderStage())
+        throw ViewerError("the viewer has no render stage to read the drawn objects from");
+    return *renderer->getSceneView(0)->getRenderStage();
+}
+} // namespace osgVis::bench

@@ -1,0 +1,44 @@
+#pragma once
+// The one offscreen viewer every mode renders in: a pbuffer of the walk's size, single-threaded
+// (cull and draw of a frame on this thread, so the render stage can be read back right after the
+// frame), the walk's fixed projection and near/far, small-feature culling off, and a glFinish at
+// the end of every frame so a frame's wall time includes the GPU work it queued.
+#include "BenchView.h"
+
+#include <osgVis/core/Walk.h>
+
+#include <osgUtil/RenderStage>
+#include <osgViewer/Viewer>
+
+#include <stdexcept>
+
+namespace osgVis::bench
+{
+struct ViewerError : std::runtime_error
+{
+    using std::runtime_error::runtime_error;
+};
+
+class BenchViewer
+{
+public:
+    // Compiles the GL objects of `model` once at realize, so that no mode pays the first upload of
+    // buffers and textures inside its timed frames. Throws ViewerError when no pbuffer can be made.
+    BenchViewer(unsigned width, unsigned height, const core::WalkProjection& projection, osg::Node& model);
+
+    void setSceneData(osg::Node* scene);
+
+    struct FrameTiming
+    {
+        double seconds = 0.0; // wall time of the whole frame, glFinish included
+        double cullMs = 0.0;  // OSG's "Cull traversal time taken" of this frame; NaN if OSG gave none
+    };
+    FrameTiming renderFrame(const BenchView& view);
+
+    // The main render stage of the frame just rendered (its bins still hold the frame's leaves).
+    const osgUtil::RenderStage& lastRenderStage() const;
+
+private:
+    osg::ref_ptr<osgViewer::Viewer> _viewer;
+};
+} // namespace osgVis::bench

@@ -1,0 +1,91 @@
+#include "EmittedObjects.h"
+
+#include <osgUtil/StateGraph>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace osgVis::bench
+{
+namespace
+{
+double largestDifference(const osg::Matrixd& a, const osg::Matrixd& b)
+{
+    double largest = 0.0;
+    for (int row = 0; row < 4; ++row)
+        for (int column = 0; column < 4; ++column)
+            largest = std::max(largest, std::abs(a(row, column) - b(row, column)));
+    return largest;
+}
+
+double largestMagnitude(const osg::Matrixd& m)
+{
+    double largest = 0.0;
+    for (int row = 0; row < 4; ++row)
+        for (int column = 0; column < 4; ++column)
+            largest = std::max(largest, std::abs(m(row, column)));
+    return largest;
+}
+
+void collectStateGraphLeaves(const osgUtil::StateGraph& graph, std::vector<const osgUtil::RenderLeaf*>& leaves)
+{
+    for (const auto& leaf : graph._leaves)
+        leaves.push_back(leaf.get());
+}
+} // namespace
+
+EmittedObjects::EmittedObjects(const ExtractedScene& scene) : _scene(scene) {}
+
+void EmittedObjects::collect(const osgUtil::RenderStage& stage, const osg::Matrixd& view, core::VisibleSet& emitted)
+{
+    _inverseView = osg::Matrixd::inverse(view);
+    for (const auto& pre : stage.getPreRenderList())
+        collect(*pre.second, view, emitted);
+    collectBin(stage, emitted);
+    for (const auto& post : stage.getPostRenderList())
+        collect(*post.second, view, emitted);
+}
+
+void EmittedObjects::collectBin(const osgUtil::RenderBin& bin, core::VisibleSet& emitted)
+{
+    // note: sorting moves the leaves of depth-sorted bins from the state graphs into the leaf list,
+    // so both have to be read.
+    std::vector<const osgUtil::RenderLeaf*> leaves(bin.getRenderLeafList().begin(), bin.getRenderLeafList().end());
+    for (const osgUtil::StateGraph* graph : bin.getStateGraphList())
+        collectStateGraphLeaves(*graph, leaves);
+    for (const osgUtil::RenderLeaf* leaf : leaves)
+        collectLeaf(*leaf, emitted);
+    for (const auto& nested : bin.getRenderBinList())
+        collectBin(*nested.second, emitted);
+}
+
+void EmittedObjects::collectLeaf(const osgUtil::RenderLeaf& leaf, core::VisibleSet& emitted)
+{
+    const std::vector<core::ObjectId>& candidates = _scene.idsOf(leaf.getDrawable());
+    if (candidates.empty())
+        return;
+    if (candidates.size() == 1 || !leaf._modelview.valid())
+    {
+        emitted.set(candidates.front());
+        return;
+    }
+    const osg::Matrixd model = *leaf._modelview * _inverseView;
+    const double tolerance = 1e-6 * (1.0 + largestMagnitude(model));
+    core::ObjectId nearest = core::InvalidObject;
+    double nearestDifference = std::numeric_limits<double>::max();
+    for (core::ObjectId id : candidates)
+    {
+        const double difference = largestDifference(model, _scene.refs[id].world);
+        if (difference < nearestDifference)
+        {
+            nearest = id;
+            nearestDifference = difference;
+        }
+    }
+    if (nearestDifference <= tolerance)
+        emitted.set(nearest);
+    else
+        ++_unmatchedLeaves;
+}
+} // namespace osgVis::bench

@@ -1,0 +1,133 @@
+#include "Metrics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace osgVis::bench
+{
+namespace
+{
+std::optional<double> ratio(double numerator, double denominator)
+{
+    if (denominator <= 0.0 || !std::isfinite(numerator) || !std::isfinite(denominator))
+        return std::nullopt;
+    return numerator / denominator;
+}
+
+// Culled-and-hidden over hidden, by object count and by triangles.
+struct CullTally
+{
+    double hiddenObjects = 0, culledHiddenObjects = 0;
+    double hiddenTriangles = 0, culledHiddenTriangles = 0;
+
+    void add(bool culled, double triangles)
+    {
+        hiddenObjects += 1.0;
+        hiddenTriangles += triangles;
+        if (culled)
+        {
+            culledHiddenObjects += 1.0;
+            culledHiddenTriangles += triangles;
+        }
+    }
+};
+
+std::vector<double> finiteValues(const std::vector<double>& values)
+{
+    std::vector<double> finite;
+    std::copy_if(values.begin(), values.end(), std::back_inserter(finite), [](double x) { return std::isfinite(x); });
+    std::sort(finite.begin(), finite.end());
+    return finite;
+}
+
+std::optional<double> median(const std::vector<double>& sorted)
+{
+    if (sorted.empty())
+        return std::nullopt;
+    const std::size_t n = sorted.size();
+    return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+}
+
+// Nearest-rank percentile: the smallest value with at least p of the samples at or below it.
+std::optional<double> percentile(const std::vector<double>& sorted, double p)
+{
+    if (sorted.empty())
+        return std::nullopt;
+    const std::size_t rank = std::size_t(std::ceil(p * double(sorted.size())));
+    return sorted[std::min(sorted.size(), std::max<std::size_t>(rank, 1)) - 1];
+}
+
+const ModeResult* findKind(const std::vector<ModeResult>& results, BenchMode::Kind kind)
+{
+    for (const ModeResult& result : results)
+        if (result.mode.kind == kind)
+            return &result;
+    return nullptr;
+}
+} // namespace
+
+ModeResult measureMode(const BenchMode& mode, const core::Scene& scene, const OracleReference& reference,
+                       const PassResult& pass)
+{
+    ModeResult result;
+    result.mode = mode;
+    CullTally all, inFrustum;
+    double drawnTriangles = 0.0, exactTriangles = 0.0;
+    for (std::size_t v = 0; v < reference.views.size(); ++v)
+    {
+        const ViewReference& view = reference.views[v];
+        const core::VisibleSet& drawn = pass.emitted[v];
+        std::uint64_t missed = view.unknownVisible;
+        for (const core::SceneObject& object : scene.objects)
+        {
+            const bool visible = view.exact.test(object.id);
+            const bool emitted = drawn.test(object.id);
+            const double triangles = double(object.triangleCount);
+            if (emitted)
+                drawnTriangles += triangles;
+            if (visible)
+            {
+                exactTriangles += triangles;
+                if (!emitted)
+                    ++missed;
+                continue;
+            }
+            all.add(!emitted, triangles);
+            if (view.inFrustum.test(object.id))
+                inFrustum.add(!emitted, triangles);
+        }
+        result.metrics.falseInvisible += missed;
+        if (missed != 0)
+            ++result.viewsWithFalseInvisible;
+    }
+
+    ModeMetrics& m = result.metrics;
+    m.efficacy = ratio(all.culledHiddenTriangles, all.hiddenTriangles);
+    m.efficacyObjects = ratio(all.culledHiddenObjects, all.hiddenObjects);
+    m.occlusionEfficacy = ratio(inFrustum.culledHiddenTriangles, inFrustum.hiddenTriangles);
+    m.overestimation = ratio(drawnTriangles, exactTriangles);
+    m.drawnFraction = ratio(drawnTriangles, double(reference.views.size()) * double(scene.totalTriangles()));
+    const std::vector<double> cullMs = finiteValues(pass.cullMs);
+    m.cullMsMedian = median(cullMs);
+    m.cullMsP99 = percentile(cullMs, 0.99);
+    m.fps = ratio(double(pass.emitted.size()), pass.renderSeconds);
+    return result;
+}
+
+void relateToBaselines(std::vector<ModeResult>& results)
+{
+    const ModeResult* osg = findKind(results, BenchMode::Kind::OsgDefault);
+    const ModeResult* exact = findKind(results, BenchMode::Kind::Exact);
+    const std::optional<double> osgFps = osg ? osg->metrics.fps : std::nullopt;
+    const std::optional<double> exactFps = exact ? exact->metrics.fps : std::nullopt;
+    for (ModeResult& result : results)
+    {
+        if (!result.metrics.fps)
+            continue;
+        if (osgFps)
+            result.metrics.speedupVsOsg = ratio(*result.metrics.fps, *osgFps);
+        if (exactFps)
+            result.metrics.fpsVsExact = ratio(*result.metrics.fps, *exactFps);
+    }
+}
+} // namespace osgVis::bench

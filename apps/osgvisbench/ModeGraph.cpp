@@ -1,0 +1,36 @@
+#include "ModeGraph.h"
+
+#include "ExactReplay.h"
+#include "OcclusionQueryGraph.h"
+
+#include <osgVis/VisibilityGroup>
+
+namespace osgVis::bench
+{
+namespace
+{
+osg::ref_ptr<osg::Node> underVisibilityGroup(osg::Node& model, const std::string& chain)
+{
+    osg::ref_ptr<VisibilityGroup> group = new VisibilityGroup;
+    group->setModes(chain);
+    group->addChild(&model);
+    return group;
+}
+} // namespace
+
+osg::ref_ptr<osg::Node> buildModeGraph(const BenchMode& mode, osg::Node& model, const ExtractedScene& scene)
+{
+    switch (mode.kind)
+    {
+    case BenchMode::Kind::OsgDefault:
+        return &model;
+    case BenchMode::Kind::OcclusionQueries:
+        return buildOcclusionQueryGraph(scene);
+    case BenchMode::Kind::Exact:
+        return underVisibilityGroup(model, ExactReplay::moduleName());
+    case BenchMode::Kind::ModuleChain:
+        break;
+    }
+    return underVisibilityGroup(model, mode.chain);
+}
+} // namespace osgVis::bench

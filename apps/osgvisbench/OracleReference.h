@@ -1,0 +1,36 @@
+#pragma once
+// The exact visible set E(v) of every bench view, from the ID-buffer oracle rendering the real
+// graph at the same matrices and resolution, translated into the adapter's object ids. Runs once,
+// untimed, before the modes.
+#include "BenchView.h"
+
+#include <osgVis/SceneExtractor>
+#include <osgVis/core/VisibleSet.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace osgVis::bench
+{
+struct ViewReference
+{
+    core::VisibleSet exact;     // E(v) in scene ids
+    core::VisibleSet inFrustum; // objects whose world bounds are not entirely outside the frustum
+    // Objects the oracle saw that the extraction does not know: no mode can draw them as objects, so
+    // they count as false-invisible for every mode.
+    std::uint32_t unknownVisible = 0;
+};
+
+struct OracleReference
+{
+    std::vector<ViewReference> views;
+    unsigned supersample = 1;
+    std::vector<std::uint32_t> viewsWithSupersampleExtras; // views where the K× render found more
+    std::uint64_t supersampleExtras = 0;                   // objects found only at K×, all views
+};
+
+// Needs a display (Xvfb). Warns on stderr about oracle objects the extraction does not know.
+OracleReference computeOracleReference(osg::Node& root, const ExtractedScene& scene,
+                                       const std::vector<BenchView>& views, unsigned width, unsigned height,
+                                       unsigned supersample);
+} // namespace osgVis::bench

@@ -1,0 +1,13 @@
+#pragma once
+// The machine-readable result (schema in docs/benchmark.md). Every number is finite or null.
+#include "BenchReport.h"
+
+#include <iosfwd>
+#include <string>
+
+namespace osgVis::bench
+{
+void writeReportJson(std::ostream& out, const BenchReport& report);
+// Throws std::runtime_error when the file cannot be written.
+void saveReportJson(const std::string& path, const BenchReport& report);
+} // namespace osgVis::bench

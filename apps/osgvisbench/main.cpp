@@ -1,0 +1,67 @@
+// osgvisbench: every culling mode side by side over one scene and walk, measured against the
+// exact-visibility oracle (docs/benchmark.md). Exit status 1 when a conservative mode culled a
+// visible object, so CI can run the bench as a check.
+#include "BenchMode.h"
+#include "BenchOptions.h"
+#include "BenchRun.h"
+#include "ReportJson.h"
+#include "ReportTable.h"
+
+#include <exception>
+#include <iostream>
+
+using namespace osgVis::bench;
+
+namespace
+{
+// The conservative modes that culled something the oracle saw; prints one line each.
+int reportFalseInvisible(const BenchReport& report)
+{
+    int failures = 0;
+    for (const ModeResult& result : report.modes)
+    {
+        if (!result.mode.conservative || result.metrics.falseInvisible == 0)
+            continue;
+        std::cerr << "osgvisbench: FAIL: conservative mode '" << result.mode.name << "' culled "
+                  << result.metrics.falseInvisible << " visible objects in " << result.viewsWithFalseInvisible << " of "
+                  << report.views << " views" << std::endl;
+        ++failures;
+    }
+    return failures;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+    BenchOptions options;
+    std::vector<BenchMode> modes;
+    try
+    {
+        options = parseBenchOptions(argc, argv);
+        if (options.help)
+        {
+            std::cout << benchUsage();
+            return 0;
+        }
+        modes = parseBenchModes(options.modes);
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "osgvisbench: " << e.what() << "\n" << benchUsage();
+        return 2;
+    }
+
+    try
+    {
+        const BenchReport report = runBench(options, modes);
+        writeReportTable(std::cout, report);
+        if (!options.jsonFile.empty())
+            saveReportJson(options.jsonFile, report);
+        return reportFalseInvisible(report) == 0 ? 0 : 1;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "osgvisbench: error: " << e.what() << std::endl;
+        return 1;
+    }
+}
