@@ -1,0 +1,53 @@
+#pragma once
+// Top-down plan of the scene for checking a culling mode by eye: every object's footprint coloured
+// drawn (green), culled inside the frustum (red) or outside the frustum (grey), plus the frustum
+// wedge and the eye of the observed camera. Drawn by an orthographic HUD camera looking down the
+// scene's z axis (the generator's and OSG's up axis).
+#include <osgVis/SceneExtractor>
+#include <osgVis/core/ModuleChain.h>
+#include <osgVis/core/VisibleSet.h>
+
+#include <osg/Camera>
+#include <osg/Geometry>
+#include <osg/observer_ptr>
+#include <osgText/Text>
+
+#include <string>
+
+namespace osgVis::viewer
+{
+class DebugMap
+{
+public:
+    DebugMap(const ExtractedScene& objects, const std::string& mode);
+
+    // Add this to the scene root, outside the culled model.
+    osg::Camera* camera() const { return _camera.get(); }
+    // The camera whose view the map explains (its view, projection and viewport are read each frame).
+    void setObservedCamera(osg::Camera* camera) { _observed = camera; }
+    // Mode whose answer colours the map: "osg" shows OSG's frustum test, else the chain's visible set.
+    void setMode(const std::string& mode);
+    void setEnabled(bool enabled);
+    bool enabled() const { return _camera->getNodeMask() != 0; }
+    // Where the map draws in the window, in pixels.
+    void setViewport(int x, int y, int width, int height);
+
+private:
+    class Refresh;
+    void refresh(double time);
+    void buildGeometry();
+    void fitProjection();
+    void classify(const core::View& view);
+
+    osg::ref_ptr<const ExtractedScene> _objects;
+    std::string _mode;
+    core::ModuleChain _chain; // empty in mode "osg"
+    core::VisibleSet _visible;
+    std::vector<core::ObjectId> _drawOrder; // largest footprint first, so small ones stay visible
+
+    osg::ref_ptr<osg::Camera> _camera;
+    osg::observer_ptr<osg::Camera> _observed;
+    osg::ref_ptr<osg::Geometry> _fills, _outlines, _frustum, _eye;
+    osg::ref_ptr<osgText::Text> _label;
+};
+} // namespace osgVis::viewer

@@ -1,0 +1,115 @@
+#include "InteractiveViewer.h"
+
+#include "CameraSetup.h"
+#include "CullingModes.h"
+#include "DebugMap.h"
+#include "WalkManipulator.h"
+
+#include <osgVis/Statistics>
+
+#include <osgGA/StateSetManipulator>
+#include <osgViewer/Viewer>
+#include <osgViewer/ViewerEventHandlers>
+
+#include <cstdlib>
+#include <iostream>
+
+namespace osgVis::viewer
+{
+namespace
+{
+// Keys of the viewer itself: `m` cycles the culling mode, `t` shows or hides the debug map.
+class ViewerKeys : public osgGA::GUIEventHandler
+{
+public:
+    ViewerKeys(CullingModes& modes, DebugMap& map) : _modes(modes), _map(map) {}
+
+    bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter&) override
+    {
+        if (ea.getHandled() || ea.getEventType() != osgGA::GUIEventAdapter::KEYDOWN)
+            return false;
+        if (ea.getKey() == 'm')
+        {
+            const std::string next = _modes.nextMode();
+            _modes.requestMode(next);
+            _map.setMode(next);
+            std::cout << "osgvisviewer: mode " << next << "\n";
+            return true;
+        }
+        if (ea.getKey() == 't')
+        {
+            _map.setEnabled(!_map.enabled());
+            return true;
+        }
+        return false;
+    }
+
+    void getUsage(osg::ApplicationUsage& usage) const override
+    {
+        usage.addKeyboardMouseBinding("m", "Next culling mode (osg, then every registered module)");
+        usage.addKeyboardMouseBinding("t", "Show / hide the top-down map: drawn green, culled red, outside grey");
+    }
+
+private:
+    CullingModes& _modes;
+    DebugMap& _map;
+};
+
+// Walking speed: crossing the scene takes about twenty seconds.
+double defaultSpeed(const core::Aabb& bounds)
+{
+    return bounds.empty() ? 1.0 : std::max(1e-3, glm::length(bounds.extent()) / 20.0);
+}
+} // namespace
+
+int runInteractive(const ViewerScene& scene, const ViewerOptions& options)
+{
+    const char* display = std::getenv("DISPLAY");
+    if (!display || !*display)
+    {
+        std::cerr << "osgvisviewer: no X display (DISPLAY is not set). Run it on a desktop, or render the walk to "
+                     "images with --headless OUTDIR under xvfb-run -a.\n";
+        return 3;
+    }
+
+    CullingModes modes(scene.model.get(), options.mode);
+    DebugMap map(*scene.objects, options.mode);
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(modes.node());
+    root->addChild(map.camera());
+
+    osgViewer::Viewer viewer;
+    viewer.setSceneData(root.get());
+    viewer.setUpViewInWindow(50, 50, int(scene.walk.width), int(scene.walk.height));
+    osg::Camera* camera = viewer.getCamera();
+    applyWalkProjection(*camera, scene.walk.projection, scene.walk.aspect());
+    map.setObservedCamera(camera);
+
+    viewer.setCameraManipulator(
+        new WalkManipulator(scene.walk, defaultSpeed(scene.objects->scene.bounds()), options.recordPath));
+    viewer.addEventHandler(new ViewerKeys(modes, map));
+
+    // OSG's usual handlers, with keys moved off w/s/e (walking) and m/t (mode, map).
+    osg::ref_ptr<osgViewer::StatsHandler> stats = new osgViewer::StatsHandler;
+    stats->setKeyEventTogglesOnScreenStats('i');
+    stats->setKeyEventPrintsOutStats('I');
+    addStatsLines(*stats);
+    viewer.addEventHandler(stats.get());
+    viewer.addEventHandler(new osgViewer::WindowSizeHandler);
+    osg::ref_ptr<osgViewer::ThreadingHandler> threading = new osgViewer::ThreadingHandler;
+    threading->setKeyEventChangeThreadingModel('n');
+    threading->setKeyEventChangeEndBarrierPosition('N');
+    viewer.addEventHandler(threading.get());
+    osg::ref_ptr<osgGA::StateSetManipulator> state = new osgGA::StateSetManipulator(camera->getOrCreateStateSet());
+    state->setKeyEventCyclePolygonMode('o');
+    state->setKeyEventToggleTexturing('x');
+    viewer.addEventHandler(state.get());
+    viewer.addEventHandler(new osgViewer::ScreenCaptureHandler);
+    osg::ref_ptr<osgViewer::HelpHandler> help = new osgViewer::HelpHandler(new osg::ApplicationUsage);
+    viewer.addEventHandler(help.get());
+
+    std::cout << "osgvisviewer: " << scene.name << ", walk " << scene.walkSource << ", mode " << options.mode
+              << " (h: help, m: next mode, t: map, p: play walk)\n";
+    return viewer.run();
+}
+} // namespace osgVis::viewer

@@ -1,0 +1,53 @@
+// osgvisviewer: walk through a scene with osgVis culling, in a window or headless to PNG files.
+#include "CullingModes.h"
+#include "HeadlessRenderer.h"
+#include "InteractiveViewer.h"
+#include "Options.h"
+#include "SceneSource.h"
+
+#include <osgVis/core/ModuleRegistry.h>
+
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+    using namespace osgVis::viewer;
+    const std::string program = "osgvisviewer";
+    ViewerOptions options;
+    try
+    {
+        options = parseOptions(argc, argv);
+        if (options.help)
+        {
+            std::cout << usageText(program);
+            return 0;
+        }
+        checkMode(options.mode);
+    }
+    catch (const OptionsError& e)
+    {
+        std::cerr << program << ": " << e.what() << "\n";
+        return 2;
+    }
+    catch (const osgVis::core::UnknownModeError& e)
+    {
+        std::cerr << program << ": " << e.what() << "\n";
+        return 2;
+    }
+
+    try
+    {
+        const ViewerScene scene = loadViewerScene(options);
+        return options.headlessDir.empty() ? runInteractive(scene, options) : renderHeadless(scene, options);
+    }
+    catch (const SceneError& e)
+    {
+        std::cerr << program << ": " << e.what() << "\n";
+        return 1;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << program << ": unexpected error: " << e.what() << "\n";
+        return 1;
+    }
+}
