@@ -1,0 +1,176 @@
+#include <osgVis/CullVisitor>
+
+#include <osgVis/core/ModuleRegistry.h>
+
+#include <osg/Camera>
+#include <osgUtil/RenderStage>
+#include <osgUtil/SceneView>
+#include <osgViewer/Renderer>
+#include <osgViewer/View>
+
+namespace osgVis
+{
+CullVisitor::Shared::Shared(const std::string& modes)
+{
+    setModes(modes);
+}
+
+CullVisitor::Shared::~Shared() = default;
+
+ViewCuller& CullVisitor::Shared::cullerFor(osg::Node& root)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    osg::ref_ptr<ViewCuller>& culler = _cullers[&root];
+    if (!culler)
+        culler = new ViewCuller(_modes);
+    _latest = culler;
+    return *culler;
+}
+
+void CullVisitor::Shared::setModes(const std::string& modes)
+{
+    core::createChain(modes); // validates: throws UnknownModeError
+    std::lock_guard<std::mutex> lock(_mutex);
+    _modes = modes;
+    for (auto& entry : _cullers)
+        entry.second->setModes(modes);
+}
+
+std::string CullVisitor::Shared::getModes() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _modes;
+}
+
+void CullVisitor::Shared::dirtyScene()
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    for (auto& entry : _cullers)
+        entry.second->dirtyScene();
+}
+
+CullStatistics CullVisitor::Shared::getLastStatistics() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _latest ? _latest->getLastStatistics() : CullStatistics{};
+}
+
+CullVisitor::CullVisitor(const std::string& modes) : _shared(new Shared(modes)) {}
+
+CullVisitor::CullVisitor(const CullVisitor& other)
+    : osg::Object(other), osgUtil::CullVisitor(other), _shared(other._shared)
+{
+}
+
+CullVisitor::~CullVisitor() = default;
+
+void CullVisitor::setModes(const std::string& modes)
+{
+    _shared->setModes(modes);
+}
+
+std::string CullVisitor::getModes() const
+{
+    return _shared->getModes();
+}
+
+void CullVisitor::dirtyScene()
+{
+    _shared->dirtyScene();
+}
+
+CullStatistics CullVisitor::getLastStatistics() const
+{
+    return _shared->getLastStatistics();
+}
+
+void CullVisitor::reset()
+{
+    osgUtil::CullVisitor::reset();
+    _activeRoot = nullptr;
+    _active = {};
+}
+
+namespace
+{
+// The first matrix pushed, which SceneView sets to the camera's view (or projection).
+// note: osg::fast_back_stack keeps the top in _value and the rest, bottom first, in _stack.
+const osg::RefMatrix* bottomOf(const osg::CullStack::MatrixStack& stack)
+{
+    if (stack.empty())
+        return nullptr;
+    return stack._stack.empty() ? stack._value.get() : stack._stack.front().get();
+}
+} // namespace
+
+void CullVisitor::activate(osg::Node& root)
+{
+    _activeRoot = &root;
+    _active = {};
+    const osg::RefMatrix* modelView = bottomOf(getModelViewStack());
+    const osg::RefMatrix* projection = bottomOf(getProjectionStack());
+    if (!modelView || !projection)
+        return;
+    // note: the bottom of the stacks holds the camera's view and projection, the frame of the scene
+    // roots, whichever nested transform or camera the first drawable sits under.
+    _active = _shared->cullerFor(root).cull(*this, root, *modelView, *projection);
+}
+
+void CullVisitor::apply(osg::Drawable& drawable)
+{
+    const osg::NodePath& path = getNodePath();
+    if (!path.empty())
+    {
+        if (path.front() != _activeRoot)
+            activate(*path.front());
+        if (_active.visible)
+        {
+            const core::ObjectId id = _active.scene->find(&drawable, path);
+            if (id != core::InvalidObject && !_active.visible->test(id))
+                return;
+        }
+    }
+    osgUtil::CullVisitor::apply(drawable);
+}
+
+void CullVisitor::installAsPrototype(const std::string& modes)
+{
+    osgUtil::CullVisitor::prototype() = new CullVisitor(modes);
+}
+
+namespace
+{
+// Replaces a SceneView's three cull visitors (mono, left, right eye) with clones of `prototype`,
+// keeping the identifiers the Renderer gave them so per-view state stays keyed per eye.
+void replaceCullVisitors(osgUtil::SceneView& sceneView, const CullVisitor& prototype)
+{
+    const auto replace = [&](osgUtil::CullVisitor* old, auto set) {
+        osg::ref_ptr<osgUtil::CullVisitor> fresh = prototype.clone();
+        if (old)
+            fresh->setIdentifier(old->getIdentifier());
+        (sceneView.*set)(fresh.get());
+    };
+    replace(sceneView.getCullVisitor(), &osgUtil::SceneView::setCullVisitor);
+    replace(sceneView.getCullVisitorLeft(), &osgUtil::SceneView::setCullVisitorLeft);
+    replace(sceneView.getCullVisitorRight(), &osgUtil::SceneView::setCullVisitorRight);
+}
+
+void installOnCamera(osg::Camera* camera, const CullVisitor& prototype)
+{
+    auto* renderer = camera ? dynamic_cast<osgViewer::Renderer*>(camera->getRenderer()) : nullptr;
+    if (!renderer)
+        return;
+    for (unsigned i = 0; i < 2; ++i)
+        if (osgUtil::SceneView* sceneView = renderer->getSceneView(i))
+            replaceCullVisitors(*sceneView, prototype);
+}
+} // namespace
+
+void CullVisitor::installOn(osgViewer::View& view, const std::string& modes)
+{
+    osg::ref_ptr<CullVisitor> prototype = new CullVisitor(modes);
+    installOnCamera(view.getCamera(), *prototype);
+    for (unsigned i = 0; i < view.getNumSlaves(); ++i)
+        installOnCamera(view.getSlave(i)._camera.get(), *prototype);
+}
+} // namespace osgVis

@@ -1,0 +1,66 @@
+#include "CullingContext.h"
+
+#include <vector>
+
+namespace osgVis
+{
+namespace
+{
+std::vector<CullingContext>& activeContexts()
+{
+    thread_local std::vector<CullingContext> contexts;
+    return contexts;
+}
+} // namespace
+
+ScopedCullingContext::ScopedCullingContext(const CullingContext& context)
+{
+    activeContexts().push_back(context);
+}
+
+ScopedCullingContext::~ScopedCullingContext()
+{
+    activeContexts().pop_back();
+}
+
+bool hiddenByActiveContext(const osg::NodeVisitor& visitor, const osg::Drawable& drawable)
+{
+    const osg::NodePath& path = visitor.getNodePath();
+    // note: nested VisibilityGroups each hold a context; any one of them may hide the drawable.
+    for (const CullingContext& context : activeContexts())
+    {
+        if (context.visitor != &visitor || context.rootDepth >= path.size())
+            continue;
+        const core::ObjectId id = context.scene->find(&drawable, path, context.rootDepth);
+        if (id != core::InvalidObject && !context.visible->test(id))
+            return true;
+    }
+    return false;
+}
+
+bool VisibilityCullCallback::cull(osg::NodeVisitor* nv, osg::Drawable* drawable, osg::RenderInfo* renderInfo) const
+{
+    if (_chained)
+    {
+        // Mirrors osgUtil::CullVisitor::apply(osg::Drawable&) for the callback we replaced.
+        if (const osg::DrawableCullCallback* dcb = _chained->asDrawableCullCallback())
+        {
+            if (dcb->cull(nv, drawable, renderInfo))
+                return true;
+        }
+        else
+        {
+            _chained->run(drawable, nv);
+        }
+    }
+    return nv && drawable && hiddenByActiveContext(*nv, *drawable);
+}
+
+void VisibilityCullCallback::installOn(osg::Drawable& drawable)
+{
+    osg::Callback* current = drawable.getCullCallback();
+    if (dynamic_cast<VisibilityCullCallback*>(current))
+        return;
+    drawable.setCullCallback(new VisibilityCullCallback(current));
+}
+} // namespace osgVis

@@ -1,0 +1,385 @@
+#include <osgVis/SceneExtractor>
+
+#include <osgVis/Cell>
+#include <osgVis/Occluder>
+#include <osgVis/Portal>
+#include <osgVis/VisibilityGroup>
+
+#include "CullingContext.h"
+
+#include <osg/AutoTransform>
+#include <osg/Billboard>
+#include <osg/Camera>
+#include <osg/Geode>
+#include <osg/Geometry>
+#include <osg/MatrixTransform>
+#include <osg/NodeVisitor>
+#include <osg/Notify>
+#include <osg/PositionAttitudeTransform>
+#include <osg/Projection>
+#include <osg/TriangleFunctor>
+
+#include <cmath>
+#include <typeinfo>
+#include <unordered_map>
+
+namespace osgVis
+{
+ExtractedScene::~ExtractedScene() = default;
+
+core::ObjectId ExtractedScene::find(const osg::Drawable* d, const osg::NodePath& path, std::size_t pathBegin) const
+{
+    const auto found = _idsByDrawable.find(d);
+    if (found == _idsByDrawable.end() || pathBegin > path.size())
+        return core::InvalidObject;
+    const std::size_t length = path.size() - pathBegin;
+    for (core::ObjectId id : found->second)
+    {
+        const osg::NodePath& refPath = refs[id].path;
+        if (refPath.size() == length && std::equal(refPath.begin(), refPath.end(), path.begin() + pathBegin))
+            return id;
+    }
+    return core::InvalidObject;
+}
+
+const std::vector<core::ObjectId>& ExtractedScene::idsOf(const osg::Drawable* d) const
+{
+    static const std::vector<core::ObjectId> none;
+    const auto found = _idsByDrawable.find(d);
+    return found == _idsByDrawable.end() ? none : found->second;
+}
+
+void ExtractedScene::indexObject(core::ObjectId id)
+{
+    _idsByDrawable[refs[id].drawable.get()].push_back(id);
+}
+
+namespace
+{
+bool finite(const osg::Vec3d& v)
+{
+    return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
+core::Vec3 toCore(const osg::Vec3d& v)
+{
+    return {v.x(), v.y(), v.z()};
+}
+
+// World bounds of a point set; non-finite input is remembered, never added.
+struct BoundsAccumulator
+{
+    explicit BoundsAccumulator(const osg::Matrixd& toRoot) : world(toRoot) {}
+
+    osg::Matrixd world;
+    core::Aabb bounds;
+    bool nonFinite = false;
+
+    void add(const osg::Vec3d& local)
+    {
+        const osg::Vec3d p = local * world;
+        if (!finite(local) || !finite(p))
+            nonFinite = true;
+        else
+            bounds.expand(toCore(p));
+    }
+    void addHomogeneous(const osg::Vec4d& v)
+    {
+        if (v.w() == 0.0 || !std::isfinite(v.w()))
+            nonFinite = true; // a point at infinity has no bounds
+        else
+            add(osg::Vec3d(v.x(), v.y(), v.z()) / v.w());
+    }
+    void addBox(const osg::BoundingBox& box)
+    {
+        if (box.valid())
+            for (unsigned i = 0; i < 8; ++i)
+                add(box.corner(i));
+    }
+};
+
+// Feeds every vertex of a vertex array to a BoundsAccumulator; `handled` stays false for array types
+// that hold no positions we understand.
+struct VertexBoundsVisitor : public osg::ConstArrayVisitor
+{
+    explicit VertexBoundsVisitor(BoundsAccumulator& out) : _out(out) {}
+
+    void apply(const osg::Vec2Array& a) override { each(a, [&](const osg::Vec2& v) { _out.add({v.x(), v.y(), 0.0}); }); }
+    void apply(const osg::Vec3Array& a) override { each(a, [&](const osg::Vec3& v) { _out.add(v); }); }
+    void apply(const osg::Vec4Array& a) override { each(a, [&](const osg::Vec4& v) { _out.addHomogeneous(v); }); }
+    void apply(const osg::Vec2dArray& a) override
+    {
+        each(a, [&](const osg::Vec2d& v) { _out.add({v.x(), v.y(), 0.0}); });
+    }
+    void apply(const osg::Vec3dArray& a) override { each(a, [&](const osg::Vec3d& v) { _out.add(v); }); }
+    void apply(const osg::Vec4dArray& a) override { each(a, [&](const osg::Vec4d& v) { _out.addHomogeneous(v); }); }
+
+    bool handled = false;
+
+private:
+    template <class ArrayT, class F> void each(const ArrayT& array, F f)
+    {
+        handled = true;
+        for (const auto& v : array)
+            f(v);
+    }
+
+    BoundsAccumulator& _out;
+};
+
+// Counts a drawable's triangles and optionally keeps them in world space.
+struct TriangleCollector
+{
+    osg::Matrixd world;
+    std::vector<core::Triangle>* out = nullptr; // null: count only
+    std::uint32_t count = 0;
+
+    void operator()(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c)
+    {
+        ++count;
+        if (!out)
+            return;
+        const osg::Vec3d wa = osg::Vec3d(a) * world, wb = osg::Vec3d(b) * world, wc = osg::Vec3d(c) * world;
+        // note: a triangle with a non-finite corner is never stored (it would poison occluder tests);
+        // its object is flagged always visible by the bounds pass.
+        if (!finite(wa) || !finite(wb) || !finite(wc))
+            return;
+        out->push_back({core::Vec3f(wa.x(), wa.y(), wa.z()), core::Vec3f(wb.x(), wb.y(), wb.z()),
+                        core::Vec3f(wc.x(), wc.y(), wc.z())});
+    }
+};
+
+bool transparentState(const osg::StateSet* ss)
+{
+    return ss && ((ss->getMode(GL_BLEND) & osg::StateAttribute::ON) ||
+                  ss->getRenderingHint() == osg::StateSet::TRANSPARENT_BIN);
+}
+
+bool isOsgVisGroup(const osg::Node& node)
+{
+    return dynamic_cast<const VisibilityGroup*>(&node) != nullptr;
+}
+
+// Node types whose cull traversal draws exactly their drawables, nothing else (see ChildRange::closed).
+bool plainNodeType(const osg::Node& node)
+{
+    const std::type_info& t = typeid(node);
+    return t == typeid(osg::Group) || t == typeid(osg::Geode) || t == typeid(osg::MatrixTransform) ||
+           t == typeid(osg::PositionAttitudeTransform) || t == typeid(Occluder) || t == typeid(Cell) ||
+           t == typeid(Portal);
+}
+
+bool plainCullCallback(const osg::Drawable& drawable)
+{
+    const osg::Callback* cb = drawable.getCullCallback();
+    if (!cb)
+        return true;
+    const auto* own = dynamic_cast<const VisibilityCullCallback*>(cb);
+    return own && !own->getChained();
+}
+
+class Extractor : public osg::NodeVisitor
+{
+public:
+    Extractor(ExtractedScene& out, const ExtractionOptions& options)
+        : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN), _out(out), _options(options)
+    {
+    }
+
+    void run(osg::Node& root)
+    {
+        _root = &root;
+        root.accept(*this);
+        resolvePortals();
+    }
+
+    void apply(osg::Node& node) override { visit(node, false); }
+    void apply(osg::Group& node) override { visit(node, false); }
+    void apply(osg::Geode& node) override { visit(node, false); }
+    void apply(osg::Billboard& node) override { visit(node, true); }
+    void apply(osg::Projection& node) override { visit(node, true); }
+    void apply(osg::Camera& node) override { visit(node, &node != _root); }
+    void apply(osg::AutoTransform& node) override { visit(node, true); }
+    void apply(osg::Transform& node) override { visit(node, node.getReferenceFrame() != osg::Transform::RELATIVE_RF); }
+
+    void apply(osg::Drawable& drawable) override
+    {
+        if (drawable.getCullCallback() && !plainCullCallback(drawable))
+            _closed = false;
+        addObject(drawable);
+    }
+
+private:
+    // `unpredictable`: the cull traversal places this node's subtree in a way extraction cannot know
+    // (screen-aligned, absolute frame, own projection), so its objects must never be culled.
+    void visit(osg::Node& node, bool unpredictable)
+    {
+        if (!plainNodeType(node) || node.getCullCallback())
+            _closed = false;
+        const bool isOccluder = dynamic_cast<Occluder*>(&node) != nullptr;
+        if (unpredictable)
+            ++_unpredictableDepth;
+        if (isOccluder)
+            ++_occluderDepth;
+        if (auto* occluder = dynamic_cast<Occluder*>(&node))
+            addOccluderPolygons(*occluder);
+        else if (auto* cell = dynamic_cast<Cell*>(&node))
+            addCell(*cell);
+        else if (auto* portal = dynamic_cast<Portal*>(&node))
+            _portals.push_back({portal, localToRoot()});
+
+        osg::Group* group = node.asGroup();
+        if (&node == _root && group && (typeid(node) == typeid(osg::Group) || isOsgVisGroup(node) ||
+                                        plainNodeType(node)))
+            traverseRootChildren(*group);
+        else
+        {
+            if (group)
+                for (unsigned i = 0; i < group->getNumChildren(); ++i)
+                    if (!validNodeMask(*group->getChild(i)))
+                        _closed = false; // a disabled child may be enabled later
+            traverse(node);
+        }
+
+        if (isOccluder)
+            --_occluderDepth;
+        if (unpredictable)
+            --_unpredictableDepth;
+    }
+
+    // Visits the root's children one by one to record which ids each of them holds.
+    void traverseRootChildren(osg::Group& root)
+    {
+        _out.childRanges.resize(root.getNumChildren());
+        for (unsigned i = 0; i < root.getNumChildren(); ++i)
+        {
+            ChildRange& range = _out.childRanges[i];
+            range.first = static_cast<core::ObjectId>(_out.scene.objects.size());
+            osg::Node* child = root.getChild(i);
+            _closed = validNodeMask(*child);
+            if (_closed)
+                child->accept(*this);
+            range.end = static_cast<core::ObjectId>(_out.scene.objects.size());
+            range.closed = _closed;
+        }
+    }
+
+    osg::Matrixd localToRoot() const { return osg::computeLocalToWorld(_nodePath); }
+
+    void addObject(osg::Drawable& drawable)
+    {
+        ObjectRef ref{&drawable, _nodePath, localToRoot()};
+
+        std::uint32_t flags = core::OBJECT_NONE;
+        if (_unpredictableDepth > 0)
+            flags |= core::OBJECT_ALWAYS_VISIBLE;
+        if (_occluderDepth > 0)
+            flags |= core::OBJECT_OCCLUDER;
+        for (const osg::Node* n : _nodePath)
+        {
+            if (transparentState(n->getStateSet()))
+                flags |= core::OBJECT_TRANSPARENT;
+            if (n->getDataVariance() == osg::Object::DYNAMIC)
+                flags |= core::OBJECT_DYNAMIC;
+        }
+
+        BoundsAccumulator bounds(ref.world);
+        const osg::Geometry* geometry = drawable.asGeometry();
+        bool fromVertices = false;
+        if (geometry && geometry->getVertexArray())
+        {
+            VertexBoundsVisitor visitor(bounds);
+            geometry->getVertexArray()->accept(visitor);
+            fromVertices = visitor.handled;
+        }
+        // note: an explicit bound or bound callback may be larger than the vertices (shader
+        // displacement); the union keeps the object conservative.
+        if (!fromVertices || drawable.getInitialBound().valid() || drawable.getComputeBoundingBoxCallback())
+            bounds.addBox(drawable.getBoundingBox());
+        if (bounds.nonFinite)
+            flags |= core::OBJECT_ALWAYS_VISIBLE;
+
+        TriangleCollector triangles;
+        triangles.world = ref.world;
+        triangles.out = _options.keepTriangles ? &_out.scene.triangles : nullptr;
+        const auto firstTriangle = static_cast<std::uint32_t>(_out.scene.triangles.size());
+        osg::TriangleFunctor<TriangleCollector> functor;
+        static_cast<TriangleCollector&>(functor) = triangles;
+        drawable.accept(functor);
+        const TriangleCollector& counted = functor;
+
+        const core::ObjectId id =
+            _out.scene.addObject(bounds.bounds, counted.count, flags, drawable.getName());
+        core::SceneObject& object = _out.scene.objects[id];
+        object.firstTriangle = firstTriangle;
+        if (_options.keepTriangles)
+            object.triangleCount = static_cast<std::uint32_t>(_out.scene.triangles.size()) - firstTriangle;
+        _out.refs.push_back(std::move(ref));
+        _out.indexObject(id);
+    }
+
+    core::ConvexPolygon toWorldPolygon(const std::vector<osg::Vec3d>& local, const osg::Matrixd& world) const
+    {
+        std::vector<core::Vec3> vertices;
+        vertices.reserve(local.size());
+        for (const osg::Vec3d& v : local)
+            vertices.push_back(toCore(v * world));
+        return core::ConvexPolygon(std::move(vertices));
+    }
+
+    void addOccluderPolygons(const Occluder& occluder)
+    {
+        const osg::Matrixd world = localToRoot();
+        for (const Occluder::Polygon& polygon : occluder.getPolygons())
+            _out.scene.occluders.push_back({toWorldPolygon(polygon, world), core::InvalidObject});
+    }
+
+    void addCell(const Cell& cell)
+    {
+        const osg::Matrixd world = localToRoot();
+        core::Cell out;
+        out.id = static_cast<std::uint32_t>(_out.scene.cells.size());
+        out.name = cell.getName();
+        const osg::BoundingBoxd& box = cell.getBounds();
+        if (box.valid())
+            for (unsigned i = 0; i < 8; ++i)
+                out.bounds.expand(toCore(box.corner(i) * world));
+        _cellIndex.emplace(out.name, out.id);
+        _out.scene.cells.push_back(std::move(out));
+    }
+
+    // Portals may name cells that come later in the traversal, so they are resolved at the end.
+    void resolvePortals()
+    {
+        for (const auto& [portal, world] : _portals)
+        {
+            const auto a = _cellIndex.find(portal->getCellA());
+            const auto b = _cellIndex.find(portal->getCellB());
+            if (a == _cellIndex.end() || b == _cellIndex.end())
+            {
+                OSG_WARN << "osgVis: portal '" << portal->getName() << "' joins unknown cells '"
+                         << portal->getCellA() << "' and '" << portal->getCellB() << "'; ignored" << std::endl;
+                continue;
+            }
+            _out.scene.portals.push_back({toWorldPolygon(portal->getPolygon(), world), a->second, b->second});
+        }
+    }
+
+    ExtractedScene& _out;
+    const ExtractionOptions& _options;
+    const osg::Node* _root = nullptr;
+    unsigned _unpredictableDepth = 0;
+    unsigned _occluderDepth = 0;
+    bool _closed = false;
+    std::unordered_map<std::string, std::uint32_t> _cellIndex;
+    std::vector<std::pair<osg::ref_ptr<const Portal>, osg::Matrixd>> _portals;
+};
+} // namespace
+
+osg::ref_ptr<ExtractedScene> extractScene(osg::Node& root, const ExtractionOptions& options)
+{
+    osg::ref_ptr<ExtractedScene> out = new ExtractedScene;
+    Extractor(*out, options).run(root);
+    return out;
+}
+} // namespace osgVis

@@ -1,0 +1,143 @@
+#include <osgVis/ViewCuller>
+
+#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/View.h>
+
+#include <osg/FrameStamp>
+#include <osg/Viewport>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <chrono>
+
+namespace osgVis
+{
+struct ViewCuller::PerView
+{
+    osg::ref_ptr<const osg::Referenced> key; // held so the address is never reused by another view
+    core::ModuleChain chain;
+    osg::ref_ptr<const ExtractedScene> scene; // the one `chain` was built for
+    core::VisibleSet visible;
+};
+
+namespace
+{
+// OSG matrices multiply row vectors but store the same 16 numbers as GL's column-major layout, which
+// is GLM's layout for column vectors.
+core::Mat4 toCore(const osg::Matrixd& m)
+{
+    return glm::make_mat4(m.ptr());
+}
+} // namespace
+
+ViewCuller::ViewCuller(const std::string& modes)
+{
+    setModes(modes);
+}
+
+ViewCuller::~ViewCuller() = default;
+
+void ViewCuller::setModes(const std::string& modes)
+{
+    core::createChain(modes); // validates: throws UnknownModeError
+    std::lock_guard<std::mutex> lock(_mutex);
+    _modes = modes;
+    _views.clear();
+}
+
+std::string ViewCuller::getModes() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _modes;
+}
+
+void ViewCuller::setExtractionOptions(const ExtractionOptions& options)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    _extractionOptions = options;
+    _scene = nullptr;
+}
+
+void ViewCuller::dirtyScene()
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    _scene = nullptr;
+}
+
+std::shared_ptr<ViewCuller::PerView> ViewCuller::viewFor(const osg::Referenced* key)
+{
+    std::shared_ptr<PerView>& view = _views[key];
+    if (!view)
+    {
+        view = std::make_shared<PerView>();
+        view->key = key;
+        view->chain = core::createChain(_modes);
+    }
+    return view;
+}
+
+ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, const osg::Matrixd& modelView,
+                                    const osg::Matrixd& projection)
+{
+    const osg::Referenced* key = cv.getIdentifier();
+    if (!key)
+        key = cv.getCurrentCamera();
+
+    osg::ref_ptr<const ExtractedScene> scene;
+    std::shared_ptr<PerView> view;
+    {
+        std::lock_guard<std::mutex> lock(_mutex);
+        if (!_scene || _root.get() != &root)
+        {
+            _scene = extractScene(root, _extractionOptions);
+            _root = &root;
+        }
+        scene = _scene;
+        view = viewFor(key);
+    }
+
+    const auto start = std::chrono::steady_clock::now();
+    if (view->scene != scene)
+    {
+        view->chain.setScene(scene->scene);
+        view->scene = scene;
+    }
+    const osg::Viewport* viewport = cv.getViewport();
+    const osg::FrameStamp* frameStamp = cv.getFrameStamp();
+    const core::View coreView =
+        core::makeView(toCore(modelView), toCore(projection), frameStamp ? frameStamp->getSimulationTime() : 0.0,
+                       viewport ? static_cast<std::uint32_t>(viewport->width()) : 1280u,
+                       viewport ? static_cast<std::uint32_t>(viewport->height()) : 1024u);
+    view->chain.cull(coreView, view->visible);
+    const auto end = std::chrono::steady_clock::now();
+
+    CullStatistics figures;
+    figures.objects = static_cast<unsigned>(scene->scene.objects.size());
+    for (const core::SceneObject& object : scene->scene.objects)
+        if (view->visible.test(object.id))
+        {
+            ++figures.visible;
+            figures.trianglesVisible += object.triangleCount;
+        }
+    figures.cullMs = std::chrono::duration<double, std::milli>(end - start).count();
+    if (frameStamp)
+        recordStatistics(cv.getCurrentCamera(), frameStamp->getFrameNumber(), figures);
+    {
+        std::lock_guard<std::mutex> lock(_mutex);
+        _last = figures;
+    }
+    return {scene, &view->visible};
+}
+
+CullStatistics ViewCuller::getLastStatistics() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _last;
+}
+
+osg::ref_ptr<const ExtractedScene> ViewCuller::getScene() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _scene;
+}
+} // namespace osgVis

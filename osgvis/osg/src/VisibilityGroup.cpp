@@ -1,0 +1,92 @@
+#include <osgVis/VisibilityGroup>
+
+#include "CullingContext.h"
+
+#include <osgUtil/CullVisitor>
+
+namespace osgVis
+{
+VisibilityGroup::VisibilityGroup() : _culler(new ViewCuller) {}
+
+VisibilityGroup::VisibilityGroup(const std::string& modes) : _culler(new ViewCuller(modes)) {}
+
+// note: a copy gets its own culler (its own extraction and per-view state), with the same modes.
+VisibilityGroup::VisibilityGroup(const VisibilityGroup& other, const osg::CopyOp& copyop)
+    : osg::Group(other, copyop), _culler(new ViewCuller(other.getModes()))
+{
+}
+
+VisibilityGroup::~VisibilityGroup() = default;
+
+bool VisibilityGroup::addChild(osg::Node* child)
+{
+    dirtyScene();
+    return osg::Group::addChild(child);
+}
+
+bool VisibilityGroup::insertChild(unsigned index, osg::Node* child)
+{
+    dirtyScene();
+    return osg::Group::insertChild(index, child);
+}
+
+bool VisibilityGroup::removeChildren(unsigned pos, unsigned numChildrenToRemove)
+{
+    dirtyScene();
+    return osg::Group::removeChildren(pos, numChildrenToRemove);
+}
+
+bool VisibilityGroup::replaceChild(osg::Node* origChild, osg::Node* newChild)
+{
+    dirtyScene();
+    return osg::Group::replaceChild(origChild, newChild);
+}
+
+bool VisibilityGroup::setChild(unsigned i, osg::Node* node)
+{
+    dirtyScene();
+    return osg::Group::setChild(i, node);
+}
+
+void VisibilityGroup::installCullCallbacks(const ExtractedScene& scene)
+{
+    std::lock_guard<std::mutex> lock(_installMutex);
+    if (_callbacksInstalledFor.get() == &scene)
+        return;
+    for (const ObjectRef& ref : scene.refs)
+        VisibilityCullCallback::installOn(*ref.drawable);
+    _callbacksInstalledFor = &scene;
+}
+
+void VisibilityGroup::traverse(osg::NodeVisitor& nv)
+{
+    auto* cv = nv.getVisitorType() == osg::NodeVisitor::CULL_VISITOR ? nv.asCullVisitor() : nullptr;
+    if (!cv || _children.empty())
+    {
+        osg::Group::traverse(nv);
+        return;
+    }
+
+    // The modelview at this group maps its local frame, the frame of the extracted bounds, to eye space.
+    const ViewCuller::Result result =
+        _culler->cull(*cv, *this, *cv->getModelViewMatrix(), *cv->getProjectionMatrix());
+    installCullCallbacks(*result.scene);
+
+    const osg::NodePath& path = cv->getNodePath();
+    const ScopedCullingContext context({cv, result.scene.get(), result.visible, path.size() - 1});
+    const std::vector<ChildRange>& ranges = result.scene->childRanges;
+    const bool rangesMatch = ranges.size() == _children.size();
+    for (unsigned i = 0; i < _children.size(); ++i)
+    {
+        if (rangesMatch && ranges[i].closed && ranges[i].first < ranges[i].end)
+        {
+            bool anyVisible = false;
+            for (core::ObjectId id = ranges[i].first; id < ranges[i].end && !anyVisible; ++id)
+                anyVisible = result.visible->test(id);
+            if (!anyVisible)
+                continue; // a closed child draws nothing but its objects
+        }
+        _children[i]->accept(nv);
+    }
+}
+} // namespace osgVis
