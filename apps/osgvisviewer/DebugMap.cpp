@@ -12,6 +12,7 @@
 #include <osg/Point>
 
 #include <algorithm>
+#include <iostream>
 #include <sstream>
 
 namespace osgVis::viewer
@@ -63,7 +64,7 @@ private:
     DebugMap& _owner;
 };
 
-DebugMap::DebugMap(const ExtractedScene& objects, const std::string& mode) : _objects(&objects)
+DebugMap::DebugMap(const ExtractedScene& objects, const CullingModes& modes) : _objects(&objects), _modes(modes)
 {
     _camera = new osg::Camera;
     _camera->setName("osgvisviewer debug map");
@@ -83,7 +84,6 @@ DebugMap::DebugMap(const ExtractedScene& objects, const std::string& mode) : _ob
     _camera->setUpdateCallback(new Refresh(*this));
 
     buildGeometry();
-    setMode(mode);
     setViewport(8, 8, 320, 320);
     setEnabled(false);
 }
@@ -144,14 +144,32 @@ void DebugMap::buildGeometry()
     _camera->addChild(geode.get());
 }
 
-void DebugMap::setMode(const std::string& mode)
+void DebugMap::followMode()
 {
-    _mode = mode;
+    VisibilityGroup* group = _modes.visibilityGroup();
+    osg::ref_ptr<const ExtractedScene> groupScene =
+        (group && _modes.mode() != OsgMode) ? group->getViewCuller()->getScene() : nullptr;
+    // note: the group extracts its own child, the model, in the same depth-first order as _objects;
+    // a count mismatch means the extractions disagree and only the frustum test is trustworthy.
+    if (groupScene && groupScene->scene.objects.size() != _objects->scene.objects.size())
+        groupScene = nullptr;
+    if (_modes.mode() == _mode && groupScene == _chainScene)
+        return;
+    _mode = _modes.mode();
+    _chainScene = groupScene;
     _chain = core::ModuleChain();
-    if (mode != OsgMode)
+    if (!_chainScene)
+        return;
+    try
     {
-        _chain = core::createChain(mode);
-        _chain.setScene(_objects->scene);
+        _chain = core::createChain(_mode);
+        _chain.setScene(_chainScene->scene);
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "osgvisviewer: the map shows the frustum test only: mode '" << _mode << "' failed: " << e.what()
+                  << "\n";
+        _chain = core::ModuleChain();
     }
 }
 
@@ -202,6 +220,7 @@ void DebugMap::refresh(double time)
     if (!_observed.lock(observed) || !observed->getViewport())
         return;
     const osg::Viewport& viewport = *observed->getViewport();
+    followMode();
     const core::View view = core::makeView(toCoreMatrix(observed->getViewMatrix()),
                                            toCoreMatrix(observed->getProjectionMatrix()), time,
                                            std::uint32_t(viewport.width()), std::uint32_t(viewport.height()));
@@ -274,7 +293,7 @@ void DebugMap::classify(const core::View& view)
     outline.dirty();
 
     std::ostringstream text;
-    text << "mode " << _mode << "   t " << view.time << " s\n"
+    text << "mode " << _mode << (_chain.empty() && _mode != OsgMode ? " (frustum test)" : "") << "   t " << view.time << " s\n"
          << "drawn " << drawn << "  culled " << culled << "  outside " << outside << "  of " << objects.size();
     _label->setText(text.str());
 }

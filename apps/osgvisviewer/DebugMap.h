@@ -3,6 +3,8 @@
 // drawn (green), culled inside the frustum (red) or outside the frustum (grey), plus the frustum
 // wedge and the eye of the observed camera. Drawn by an orthographic HUD camera looking down the
 // scene's z axis (the generator's and OSG's up axis).
+#include "CullingModes.h"
+
 #include <osgVis/SceneExtractor>
 #include <osgVis/core/ModuleChain.h>
 #include <osgVis/core/VisibleSet.h>
@@ -19,14 +21,15 @@ namespace osgVis::viewer
 class DebugMap
 {
 public:
-    DebugMap(const ExtractedScene& objects, const std::string& mode);
+    // `objects` gives the footprints; `modes` the mode whose answer colours the map ("osg": OSG's
+    // frustum test; else the mode's chain run on the VisibilityGroup's own extraction, so that ids
+    // and occluders are the group's).
+    DebugMap(const ExtractedScene& objects, const CullingModes& modes);
 
     // Add this to the scene root, outside the culled model.
     osg::Camera* camera() const { return _camera.get(); }
     // The camera whose view the map explains (its view, projection and viewport are read each frame).
     void setObservedCamera(osg::Camera* camera) { _observed = camera; }
-    // Mode whose answer colours the map: "osg" shows OSG's frustum test, else the chain's visible set.
-    void setMode(const std::string& mode);
     void setEnabled(bool enabled);
     bool enabled() const { return _camera->getNodeMask() != 0; }
     // Where the map draws in the window, in pixels.
@@ -37,11 +40,14 @@ private:
     void refresh(double time);
     void buildGeometry();
     void fitProjection();
+    void followMode();
     void classify(const core::View& view);
 
     osg::ref_ptr<const ExtractedScene> _objects;
-    std::string _mode;
-    core::ModuleChain _chain; // empty in mode "osg"
+    const CullingModes& _modes;
+    std::string _mode;                               // mode of _chain
+    osg::ref_ptr<const ExtractedScene> _chainScene;  // the group's extraction _chain works on
+    core::ModuleChain _chain;                        // empty: frustum test only
     core::VisibleSet _visible;
     std::vector<core::ObjectId> _drawOrder; // largest footprint first, so small ones stay visible
 

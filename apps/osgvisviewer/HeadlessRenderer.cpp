@@ -108,7 +108,7 @@ int renderHeadless(const ViewerScene& scene, const ViewerOptions& options)
     }
 
     CullingModes modes(scene.model.get(), options.mode);
-    DebugMap map(*scene.objects, options.mode);
+    DebugMap map(*scene.objects, modes);
     osg::ref_ptr<osg::Group> root = new osg::Group;
     root->addChild(modes.node());
     root->addChild(map.camera());

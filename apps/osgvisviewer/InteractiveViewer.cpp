@@ -32,7 +32,6 @@ public:
         {
             const std::string next = _modes.nextMode();
             _modes.requestMode(next);
-            _map.setMode(next);
             std::cout << "osgvisviewer: mode " << next << "\n";
             return true;
         }
@@ -73,7 +72,7 @@ int runInteractive(const ViewerScene& scene, const ViewerOptions& options)
     }
 
     CullingModes modes(scene.model.get(), options.mode);
-    DebugMap map(*scene.objects, options.mode);
+    DebugMap map(*scene.objects, modes);
     osg::ref_ptr<osg::Group> root = new osg::Group;
     root->addChild(modes.node());
     root->addChild(map.camera());
