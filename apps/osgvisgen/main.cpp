@@ -1,0 +1,183 @@
+// osgvisgen: writes a seeded test scene (.osgb or any format osgDB writes) and its walk beside it.
+#include <osgVis/gen/Generator.h>
+#include <osgVis/gen/SceneStats.h>
+
+#include <osgDB/WriteFile>
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <optional>
+#include <string>
+
+namespace
+{
+const char* usage =
+    "usage: osgvisgen --kind office|city|tetra [--triangles N] [--seed S] -o SCENE\n"
+    "       osgvisgen --adversarial NAME -o SCENE\n"
+    "       osgvisgen --list | --help\n"
+    "\n"
+    "Writes a generated scene to SCENE (format by extension, e.g. scene.osgb) and its walk to the\n"
+    "same path with the extension .walk (scene.walk), then prints one summary line.\n"
+    "\n"
+    "  --kind K          office (furnished rooms and corridors), city (streets and buildings) or\n"
+    "                    tetra (tetrahedra on a plane)\n"
+    "  --triangles N     triangle budget, 1000 to 50000000 (default 100000); the scene lands within 10%\n"
+    "  --seed S          random seed, 0 to 4294967295 (default 1); the same seed gives the same bytes\n"
+    "  --adversarial NAME  one of the small adversarial scenes instead (see --list)\n"
+    "  -o, --output SCENE  output path (required)\n"
+    "  --list            list the scene kinds and adversarial scenes\n"
+    "  --help            this text\n"
+    "\n"
+    "Presets (layout, tessellation, walk speed, projection) are frozen: see docs/scenes.md.\n";
+
+struct UsageError : std::runtime_error
+{
+    using std::runtime_error::runtime_error;
+};
+
+// Decimal digits only: std::stoull would accept "-1", " 7" and "12abc".
+std::uint64_t parseUnsigned(const std::string& option, const std::string& text, std::uint64_t lo, std::uint64_t hi)
+{
+    bool digits = !text.empty() && text.size() <= 19;
+    for (char c : text)
+        digits = digits && c >= '0' && c <= '9';
+    if (!digits)
+        throw UsageError(option + " needs a whole number, got '" + text + "'");
+    const std::uint64_t value = std::stoull(text);
+    if (value < lo || value > hi)
+        throw UsageError(option + " " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return value;
+}
+
+std::string walkPathFor(const std::string& scenePath)
+{
+    const std::size_t slash = scenePath.find_last_of('/');
+    const std::size_t dot = scenePath.find_last_of('.');
+    const bool hasExtension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+    return (hasExtension ? scenePath.substr(0, dot) : scenePath) + ".walk";
+}
+
+struct Options
+{
+    std::optional<std::string> kind;
+    std::optional<std::string> adversarial;
+    std::uint64_t triangles = 100000;
+    std::uint32_t seed = 1;
+    std::string output;
+    bool list = false;
+    bool help = false;
+};
+
+Options parse(int argc, char** argv)
+{
+    Options o;
+    for (int i = 1; i < argc; ++i)
+    {
+        const std::string arg = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc)
+                throw UsageError(arg + " needs a value");
+            return argv[++i];
+        };
+        if (arg == "--help" || arg == "-h")
+            o.help = true;
+        else if (arg == "--list")
+            o.list = true;
+        else if (arg == "--kind")
+            o.kind = value();
+        else if (arg == "--adversarial")
+            o.adversarial = value();
+        else if (arg == "--triangles")
+            o.triangles = parseUnsigned(arg, value(), osgVis::gen::minTriangles, osgVis::gen::maxTriangles);
+        else if (arg == "--seed")
+            o.seed = std::uint32_t(parseUnsigned(arg, value(), 0, 4294967295u));
+        else if (arg == "-o" || arg == "--output")
+            o.output = value();
+        else
+            throw UsageError("unknown argument '" + arg + "'");
+    }
+    if (o.help || o.list)
+        return o;
+    if (o.kind && o.adversarial)
+        throw UsageError("give either --kind or --adversarial, not both");
+    if (!o.kind && !o.adversarial)
+        throw UsageError("missing --kind (or --adversarial)");
+    if (o.output.empty())
+        throw UsageError("missing output path (-o SCENE)");
+    return o;
+}
+
+int run(const Options& o)
+{
+    namespace gen = osgVis::gen;
+    if (o.help)
+    {
+        std::cout << usage;
+        return 0;
+    }
+    if (o.list)
+    {
+        std::cout << "kinds:";
+        for (const std::string& k : gen::sceneKindNames())
+            std::cout << ' ' << k;
+        std::cout << "\nadversarial:";
+        for (const std::string& n : gen::adversarialSceneNames())
+            std::cout << ' ' << n;
+        std::cout << '\n';
+        return 0;
+    }
+
+    const auto start = std::chrono::steady_clock::now();
+    gen::GeneratedScene scene;
+    std::string what;
+    if (o.adversarial)
+    {
+        scene = gen::adversarialScene(*o.adversarial);
+        what = "adversarial " + *o.adversarial;
+    }
+    else
+    {
+        gen::GenerateOptions options;
+        options.kind = gen::parseSceneKind(*o.kind);
+        options.triangles = o.triangles;
+        options.seed = o.seed;
+        scene = gen::generate(options);
+        what = *o.kind + " seed " + std::to_string(o.seed);
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    if (!osgDB::writeNodeFile(*scene.root, o.output))
+    {
+        std::cerr << "osgvisgen: cannot write '" << o.output << "' (missing directory, no permission, or no osgDB plugin for its extension)\n";
+        return 1;
+    }
+    const std::string walkPath = walkPathFor(o.output);
+    scene.walk.save(walkPath);
+
+    const gen::SceneStats stats = gen::sceneStats(*scene.root);
+    std::printf("%s: %zu objects, %llu triangles, %zu walk views, generated in %.2f s -> %s (walk %s)\n", what.c_str(),
+                stats.objects, (unsigned long long)stats.triangles, scene.walk.keys.size(), seconds, o.output.c_str(),
+                walkPath.c_str());
+    return 0;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+    try
+    {
+        return run(parse(argc, argv));
+    }
+    catch (const UsageError& e)
+    {
+        std::cerr << "osgvisgen: " << e.what() << "\n(osgvisgen --help for usage)\n";
+        return 2;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "osgvisgen: " << e.what() << '\n';
+        return 1;
+    }
+}

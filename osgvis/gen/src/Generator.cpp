@@ -1,0 +1,69 @@
+#include <osgVis/gen/Generator.h>
+
+#include "Scenes.h"
+
+#include <stdexcept>
+
+namespace osgVis::gen
+{
+namespace
+{
+struct KindName
+{
+    SceneKind kind;
+    const char* name;
+};
+constexpr KindName kindNames[] = {{SceneKind::Office, "office"}, {SceneKind::City, "city"}, {SceneKind::Tetra, "tetra"}};
+
+GeneratedScene mesh(SceneModel scene, double density)
+{
+    return {buildSceneGraph(scene.model, density), std::move(scene.walk)};
+}
+} // namespace
+
+GeneratedScene generate(const GenerateOptions& options)
+{
+    if (options.triangles < minTriangles || options.triangles > maxTriangles)
+        throw std::invalid_argument("triangle budget " + std::to_string(options.triangles) + " is outside [" +
+                                    std::to_string(minTriangles) + ", " + std::to_string(maxTriangles) + "]");
+    SceneModel scene;
+    switch (options.kind)
+    {
+    case SceneKind::Office: scene = officeModel(options.triangles, options.seed); break;
+    case SceneKind::City: scene = cityModel(options.triangles, options.seed); break;
+    case SceneKind::Tetra: scene = tetraModel(options.triangles, options.seed); break;
+    }
+    const double density = calibrateDensity(scene.model, options.triangles);
+    return mesh(std::move(scene), density);
+}
+
+SceneKind parseSceneKind(const std::string& name)
+{
+    for (const KindName& k : kindNames)
+        if (name == k.name)
+            return k.kind;
+    throw std::invalid_argument("unknown scene kind '" + name + "' (known: office, city, tetra)");
+}
+
+const char* sceneKindName(SceneKind kind)
+{
+    for (const KindName& k : kindNames)
+        if (kind == k.kind)
+            return k.name;
+    return "unknown";
+}
+
+std::vector<std::string> sceneKindNames()
+{
+    std::vector<std::string> names;
+    for (const KindName& k : kindNames)
+        names.emplace_back(k.name);
+    return names;
+}
+
+GeneratedScene adversarialScene(const std::string& name)
+{
+    // Coarsest meshing: every face one cell, so the scenes stay tiny and their geometry exact.
+    return mesh(adversarialModel(name), 0.0);
+}
+} // namespace osgVis::gen
