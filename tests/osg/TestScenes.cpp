@@ -1,0 +1,24 @@
+#include "TestScenes.h"
+
+#include <osg/StateSet>
+
+namespace osgVis::test
+{
+osg::ref_ptr<osg::Geometry> makeBox(const osg::Vec3& min, const osg::Vec3& max, const osg::Vec4& colour)
+{
+    osg::ref_ptr<osg::Geometry> box = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> vertices = new osg::Vec3Array;
+    for (int i = 0; i < 8; ++i) // corner i: bit 0 → x max, bit 1 → y max, bit 2 → z max
+        vertices->push_back(osg::Vec3((i & 1) ? max.x() : min.x(), (i & 2) ? max.y() : min.y(),
+                                      (i & 4) ? max.z() : min.z()));
+    box->setVertexArray(vertices);
+    osg::ref_ptr<osg::Vec4Array> colours = new osg::Vec4Array;
+    colours->push_back(colour);
+    box->setColorArray(colours, osg::Array::BIND_OVERALL);
+    static const unsigned short faces[] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                                           2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+    box->addPrimitiveSet(new osg::DrawElementsUShort(GL_TRIANGLES, 36, faces));
+    box->getOrCreateStateSet()->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
+    return box;
+}
+} // namespace osgVis::test
