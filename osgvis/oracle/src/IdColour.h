@@ -1,0 +1,24 @@
+#pragma once
+
+#include <osg/Vec3f>
+
+#include <cstdint>
+
+namespace osgVis::oracle
+{
+// Object index i draws colour i+1 packed into 24 bits of RGB; 0 is the background.
+constexpr std::uint32_t MaxIdObjects = (1u << 24) - 1;
+
+inline osg::Vec3f idColour(std::uint32_t objectIndex)
+{
+    const std::uint32_t v = objectIndex + 1;
+    // note: k/255 converts back to exactly k in an 8-bit normalised colour buffer (round to nearest)
+    return osg::Vec3f(float(v & 0xffu) / 255.0f, float((v >> 8) & 0xffu) / 255.0f, float((v >> 16) & 0xffu) / 255.0f);
+}
+
+// An RGBA8 pixel read as a little-endian 32-bit word: R in the low byte. Returns index + 1, 0 = background.
+inline std::uint32_t idPlusOneOfPixel(std::uint32_t rgba)
+{
+    return rgba & 0xffffffu;
+}
+} // namespace osgVis::oracle
