@@ -2,6 +2,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -45,7 +46,8 @@ public:
 
     [[noreturn]] void fail(const std::string& what) const
     {
-        throw WalkError(_source + ":" + std::to_string(_line) + ": " + what);
+        // note: an empty input reports line 1, where the header was expected.
+        throw WalkError(_source + ":" + std::to_string(std::max(_line, 1)) + ": " + what);
     }
 
     double number(const std::string& token) const
