@@ -1,0 +1,58 @@
+// The query phase allocates nothing after warm-up: a replaced global operator new counts.
+#include <osgVis/core/FrustumModule.h>
+#include <osgVis/core/ModuleRegistry.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+#include <new>
+
+namespace
+{
+std::atomic<std::size_t> allocations{0};
+}
+
+void* operator new(std::size_t size)
+{
+    ++allocations;
+    if (void* p = std::malloc(size ? size : 1))
+        return p;
+    throw std::bad_alloc();
+}
+
+void operator delete(void* p) noexcept
+{
+    std::free(p);
+}
+
+void operator delete(void* p, std::size_t) noexcept
+{
+    std::free(p);
+}
+
+using namespace osgVis::core;
+
+TEST(FrustumModule, NoAllocationAfterWarmUp)
+{
+    Scene scene;
+    for (int x = 0; x < 20; ++x)
+        for (int y = 0; y < 20; ++y)
+            scene.addObject(Aabb(Vec3(3 * x, 3 * y, 0), Vec3(3 * x + 1, 3 * y + 1, 1)), 12);
+    ModuleChain chain = createChain("frustum");
+    chain.setScene(scene);
+    const Mat4 projection = glm::perspective(glm::radians(60.0), 1.25, 0.1, 100.0);
+    VisibleSet visible;
+    std::vector<View> views;
+    for (int i = 0; i < 20; ++i)
+        views.push_back(makeView(glm::lookAt(Vec3(i * 2.0, -10, 5), Vec3(30, 30, 0), Vec3(0, 0, 1)), projection));
+    for (const View& v : views)
+        chain.cull(v, visible); // warm-up
+
+    const std::size_t before = allocations.load();
+    for (const View& v : views)
+        chain.cull(v, visible);
+    EXPECT_EQ(allocations.load() - before, 0u);
+    EXPECT_GT(visible.count(), 0u);
+    EXPECT_LT(visible.count(), scene.objects.size());
+}
