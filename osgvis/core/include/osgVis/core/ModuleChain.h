@@ -18,11 +18,12 @@ struct StageTiming
 class ModuleChain
 {
 public:
+    // A module added after setScene receives the scene at once.
     void add(std::unique_ptr<VisibilityModule> module);
     bool empty() const { return _modules.empty(); }
     std::size_t size() const { return _modules.size(); }
     VisibilityModule& module(std::size_t i) { return *_modules[i]; }
-    // "frustum,octree"
+    // Stage names joined with commas: "frustum,octree".
     std::string name() const;
     bool approximate() const;
 
