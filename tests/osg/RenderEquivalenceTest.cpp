@@ -108,10 +108,11 @@ struct Frame
     double statsVisible = -1; // "osgVis visible" in the camera's stats, -1 when absent
 };
 
-Frame render(osg::Node* scene, Culling culling)
+Frame render(osg::Node* scene, Culling culling,
+             osgViewer::ViewerBase::ThreadingModel threading = osgViewer::ViewerBase::SingleThreaded)
 {
     osgViewer::Viewer viewer;
-    viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
+    viewer.setThreadingModel(threading);
     osg::Camera* camera = viewer.getCamera();
     osg::ref_ptr<osg::GraphicsContext> gc = createContext();
     if (!gc)
@@ -132,9 +133,11 @@ Frame render(osg::Node* scene, Culling culling)
         osgVis::CullVisitor::installOn(viewer, "frustum");
     viewer.setSceneData(scene);
     viewer.realize();
-    // Two frames: the Renderer's two SceneViews alternate and share one per-view state.
+    // Several frames: the Renderer's two SceneViews alternate and share one per-view state.
     viewer.frame();
     viewer.frame();
+    viewer.frame();
+    viewer.stopThreading(); // the last draw (and its capture) may still run on a draw thread
 
     Frame frame;
     frame.image = capture->image;
@@ -194,4 +197,28 @@ TEST(RenderEquivalence, VisibilityGroupAndCullVisitorDrawTheSamePixelsAsOsg)
     EXPECT_EQ(byCullVisitor.cullVisitorFigures.objects, SceneObjects);
     EXPECT_EQ(byCullVisitor.cullVisitorFigures.visible, groupFigures.visible);
     EXPECT_EQ(byCullVisitor.statsVisible, double(groupFigures.visible));
+}
+
+TEST(RenderEquivalence, ThreadedModelsDrawTheSamePixels)
+{
+    const auto content = sceneContent();
+    osg::ref_ptr<osg::Node> plain = wrap(new osg::Group, content);
+    osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("frustum");
+    osg::ref_ptr<osg::Node> culled = wrap(group.get(), content);
+
+    const Frame reference = render(plain.get(), Culling::Osg);
+    if (!reference.image || !reference.image->data())
+        GTEST_SKIP() << "no GL context (run under xvfb-run)";
+    for (auto threading : {osgViewer::ViewerBase::DrawThreadPerContext,
+                           osgViewer::ViewerBase::CullThreadPerCameraDrawThreadPerContext})
+    {
+        SCOPED_TRACE(threading);
+        const Frame byGroup = render(culled.get(), Culling::Osg, threading);
+        ASSERT_TRUE(byGroup.image && byGroup.image->data());
+        EXPECT_TRUE(samePixels(*reference.image, *byGroup.image));
+        const Frame byCullVisitor = render(plain.get(), Culling::CullVisitor, threading);
+        ASSERT_TRUE(byCullVisitor.image && byCullVisitor.image->data());
+        EXPECT_TRUE(samePixels(*reference.image, *byCullVisitor.image));
+        EXPECT_LT(byCullVisitor.cullVisitorFigures.visible, SceneObjects);
+    }
 }

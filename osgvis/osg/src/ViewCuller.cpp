@@ -3,6 +3,7 @@
 #include <osgVis/core/ModuleRegistry.h>
 #include <osgVis/core/View.h>
 
+#include <osg/Camera>
 #include <osg/FrameStamp>
 #include <osg/Viewport>
 
@@ -79,9 +80,11 @@ std::shared_ptr<ViewCuller::PerView> ViewCuller::viewFor(const osg::Referenced* 
 ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, const osg::Matrixd& modelView,
                                     const osg::Matrixd& projection)
 {
+    // note: getCurrentCamera() dereferences the render bin, which a bare visitor (tests, tools) lacks.
+    osg::Camera* camera = cv.getCurrentRenderBin() ? cv.getCurrentCamera() : nullptr;
     const osg::Referenced* key = cv.getIdentifier();
     if (!key)
-        key = cv.getCurrentCamera();
+        key = camera;
 
     osg::ref_ptr<const ExtractedScene> scene;
     std::shared_ptr<PerView> view;
@@ -121,7 +124,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         }
     figures.cullMs = std::chrono::duration<double, std::milli>(end - start).count();
     if (frameStamp)
-        recordStatistics(cv.getCurrentCamera(), frameStamp->getFrameNumber(), figures);
+        recordStatistics(camera, frameStamp->getFrameNumber(), figures);
     {
         std::lock_guard<std::mutex> lock(_mutex);
         _last = figures;
