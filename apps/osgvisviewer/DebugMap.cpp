@@ -103,7 +103,7 @@ void DebugMap::buildGeometry()
                      [&](core::ObjectId a, core::ObjectId b) { return footprint(a) > footprint(b); });
 
     const unsigned count = unsigned(_drawOrder.size());
-    osg::ref_ptr<osg::Geometry> background = makeLayer(GL_QUADS, 4, 1, osg::Vec4(0.08f, 0.08f, 0.1f, 0.85f), false);
+    osg::ref_ptr<osg::Geometry> background = makeLayer(GL_QUADS, 4, 1, osg::Vec4(0.08f, 0.08f, 0.1f, 1.0f), false);
     background->setName("background");
     _fills = makeLayer(GL_QUADS, 4 * count, 2, OutsideColour, true);
     _outlines = makeLayer(GL_LINES, 8 * count, 3, OutsideColour, true);
@@ -294,7 +294,8 @@ void DebugMap::classify(const core::View& view)
 
     std::ostringstream text;
     text << "mode " << _mode << (_chain.empty() && _mode != OsgMode ? " (frustum test)" : "") << "   t " << view.time << " s\n"
-         << "drawn " << drawn << "  culled " << culled << "  outside " << outside << "  of " << objects.size();
+         << "drawn " << drawn << "  culled " << culled << "\n"
+         << "outside " << outside << "  of " << objects.size();
     _label->setText(text.str());
 }
 } // namespace osgVis::viewer

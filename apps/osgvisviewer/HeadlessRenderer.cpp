@@ -55,7 +55,7 @@ osg::ref_ptr<osg::GraphicsContext> createPbuffer(unsigned width, unsigned height
     traits->width = int(width);
     traits->height = int(height);
     traits->red = traits->green = traits->blue = 8;
-    traits->alpha = 8;
+    traits->alpha = 0; // note: an alpha channel makes Xvfb reject the pbuffer swap (BadMatch)
     traits->depth = 24;
     traits->windowDecoration = false;
     traits->pbuffer = true;
