@@ -2,6 +2,8 @@
 
 #include "Scenes.h"
 
+#include <osg/LightModel>
+
 #include <stdexcept>
 
 namespace osgVis::gen
@@ -15,9 +17,22 @@ struct KindName
 };
 constexpr KindName kindNames[] = {{SceneKind::Office, "office"}, {SceneKind::City, "city"}, {SceneKind::Tetra, "tetra"}};
 
+// Under a plain headlight, floors and ceilings seen edge-on get no diffuse light and draw black; a
+// global ambient term keeps every surface readable in screenshots, and two-sided lighting lights
+// walls and polygons seen from behind.
+void addReadableLighting(osg::Group& root)
+{
+    osg::ref_ptr<osg::LightModel> lightModel = new osg::LightModel;
+    lightModel->setAmbientIntensity(osg::Vec4(0.45f, 0.45f, 0.45f, 1.0f));
+    lightModel->setTwoSided(true);
+    root.getOrCreateStateSet()->setAttributeAndModes(lightModel.get());
+}
+
 GeneratedScene mesh(SceneModel scene, double density)
 {
-    return {buildSceneGraph(scene.model, density), std::move(scene.walk)};
+    GeneratedScene generated{buildSceneGraph(scene.model, density), std::move(scene.walk)};
+    addReadableLighting(*generated.root);
+    return generated;
 }
 } // namespace
 

@@ -24,6 +24,28 @@ osg::Vec3d catmullRom(const osg::Vec3d p[4], const double k[4], double t)
     const osg::Vec3d b2 = lerp(a2, a3, k[1], k[3], t);
     return lerp(b1, b2, k[1], k[2], t);
 }
+// Catmull–Rom bows a long leg between short ones (the tangents at its ends point across it). Knots a
+// third of the shortest neighbouring leg in from each end make the middle of every leg a piece whose
+// four control points are collinear, hence straight; the curve turns only near the waypoints.
+std::vector<osg::Vec3d> withStraightLegs(const std::vector<osg::Vec3d>& w)
+{
+    auto legLength = [&](std::size_t i) { return (w[i + 1] - w[i]).length(); };
+    std::vector<osg::Vec3d> result{w.front()};
+    for (std::size_t i = 0; i + 1 < w.size(); ++i)
+    {
+        const double length = legLength(i);
+        double shortest = length;
+        if (i > 0)
+            shortest = std::min(shortest, legLength(i - 1));
+        if (i + 2 < w.size())
+            shortest = std::min(shortest, legLength(i + 1));
+        const osg::Vec3d dir = (w[i + 1] - w[i]) / length;
+        result.push_back(w[i] + dir * (shortest / 3.0));
+        result.push_back(w[i + 1] - dir * (shortest / 3.0));
+        result.push_back(w[i + 1]);
+    }
+    return result;
+}
 } // namespace
 
 SmoothPath::SmoothPath(const std::vector<osg::Vec3d>& waypoints)
@@ -34,6 +56,7 @@ SmoothPath::SmoothPath(const std::vector<osg::Vec3d>& waypoints)
             w.push_back(p);
     if (w.size() < 2)
         throw std::invalid_argument("a walk needs two distinct waypoints");
+    w = withStraightLegs(w);
     // Phantom end points continue the first and last legs straight.
     w.insert(w.begin(), w[0] * 2.0 - w[1]);
     w.push_back(w[w.size() - 1] * 2.0 - w[w.size() - 2]);

@@ -1,0 +1,111 @@
+// osgvisgen as a user runs it: clear messages and a non-zero exit on bad input, the scene and its
+// walk on disk otherwise.
+#include <osgVis/core/Walk.h>
+#include <osgVis/gen/SceneStats.h>
+
+#include <osgDB/ReadFile>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace
+{
+struct AppRun
+{
+    int exitCode = -1;
+    std::string output; // stdout and stderr together
+};
+
+AppRun osgvisgen(const std::string& arguments)
+{
+    AppRun run;
+    const std::string command = std::string("'") + OSGVISGEN_BINARY + "' " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe)
+        return run;
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe))
+        run.output += buffer;
+    const int status = pclose(pipe);
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return run;
+}
+
+std::filesystem::path scratchDir()
+{
+    const auto dir = std::filesystem::temp_directory_path() / ("osgvisgen-test-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+void expectFailure(const std::string& arguments, const std::string& message)
+{
+    const AppRun run = osgvisgen(arguments);
+    EXPECT_NE(run.exitCode, 0) << arguments;
+    EXPECT_LT(run.exitCode, 128) << arguments << ": crashed\n" << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << arguments << " printed:\n" << run.output;
+}
+} // namespace
+
+TEST(GenApp, RejectsBadArgumentsWithAClearMessage)
+{
+    const std::string out = (scratchDir() / "x.osgb").string();
+    expectFailure("--kind castle -o " + out, "unknown scene kind 'castle'");
+    expectFailure("--kind office --triangles lots -o " + out, "--triangles needs a whole number");
+    expectFailure("--kind office --triangles 12abc -o " + out, "--triangles needs a whole number");
+    expectFailure("--kind office --triangles -5 -o " + out, "--triangles needs a whole number");
+    expectFailure("--kind office --triangles 999 -o " + out, "out of range");
+    expectFailure("--kind office --triangles 50000001 -o " + out, "out of range");
+    expectFailure("--kind office --triangles 99999999999999999999999 -o " + out, "--triangles");
+    expectFailure("--kind office --seed x -o " + out, "--seed needs a whole number");
+    expectFailure("--kind office", "missing output path");
+    expectFailure("--kind office -o", "-o needs a value");
+    expectFailure("-o " + out, "missing --kind");
+    expectFailure("--kind city --adversarial ortho -o " + out, "not both");
+    expectFailure("--adversarial no-such-scene -o " + out, "unknown adversarial scene");
+    expectFailure("--frobnicate", "unknown argument '--frobnicate'");
+    expectFailure("--kind tetra --triangles 1000 -o /nonexistent-dir/deeper/x.osgb", "cannot write");
+    expectFailure("--kind tetra --triangles 1000 -o " + (scratchDir() / "x.unknownextension").string(), "cannot write");
+}
+
+TEST(GenApp, HelpAndListTellTheTruth)
+{
+    const AppRun help = osgvisgen("--help");
+    EXPECT_EQ(help.exitCode, 0);
+    for (const char* option : {"--kind", "--triangles", "--seed", "--adversarial", "-o", "--list"})
+        EXPECT_NE(help.output.find(option), std::string::npos) << option;
+    const AppRun list = osgvisgen("--list");
+    EXPECT_EQ(list.exitCode, 0);
+    for (const char* name : {"office", "city", "tetra", "thin-slit", "moving-occluder"})
+        EXPECT_NE(list.output.find(name), std::string::npos) << name;
+}
+
+TEST(GenApp, WritesTheSceneAndItsWalkAndSaysSo)
+{
+    const auto dir = scratchDir();
+    const std::string scene = (dir / "office.osgb").string();
+    const AppRun run = osgvisgen("--kind office --triangles 5000 --seed 3 -o " + scene);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("office"), std::string::npos);
+    EXPECT_NE(run.output.find("triangles"), std::string::npos);
+    EXPECT_NE(run.output.find(scene), std::string::npos);
+
+    osg::ref_ptr<osg::Node> loaded = osgDB::readRefNodeFile(scene);
+    ASSERT_TRUE(loaded.valid());
+    const auto triangles = osgVis::gen::sceneStats(*loaded).triangles;
+    EXPECT_NEAR(double(triangles), 5000.0, 500.0);
+    EXPECT_NE(run.output.find(std::to_string(triangles) + " triangles"), std::string::npos) << run.output;
+
+    const osgVis::core::Walk walk = osgVis::core::Walk::load((dir / "office.walk").string());
+    EXPECT_GE(walk.keys.size(), 200u);
+
+    const AppRun adversarial = osgvisgen("--adversarial thin-slit -o " + (dir / "slit.osgb").string());
+    ASSERT_EQ(adversarial.exitCode, 0) << adversarial.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "slit.walk"));
+    std::filesystem::remove_all(dir);
+}
