@@ -32,7 +32,7 @@ public:
         {
             const std::string next = _modes.nextMode();
             _modes.requestMode(next);
-            std::cout << "osgvisviewer: mode " << next << "\n";
+            std::cout << "osgvisviewer: mode " << next << std::endl;
             return true;
         }
         if (ea.getKey() == 't')
@@ -108,7 +108,7 @@ int runInteractive(const ViewerScene& scene, const ViewerOptions& options)
     viewer.addEventHandler(help.get());
 
     std::cout << "osgvisviewer: " << scene.name << ", walk " << scene.walkSource << ", mode " << options.mode
-              << " (h: help, m: next mode, t: map, p: play walk)\n";
+              << " (h: help, m: next mode, t: map, p: play walk)" << std::endl;
     return viewer.run();
 }
 } // namespace osgVis::viewer

@@ -171,7 +171,7 @@ void WalkManipulator::togglePlayback(double now)
     {
         _playing = false;
         setFromKey(_playKey);
-        std::cout << "osgvisviewer: walk stopped\n";
+        std::cout << "osgvisviewer: walk stopped" << std::endl;
         return;
     }
     if (_walk.keys.empty())
@@ -180,7 +180,7 @@ void WalkManipulator::togglePlayback(double now)
     _playStart = now;
     _playKey = _walk.keys.front();
     std::cout << "osgvisviewer: playing the walk (" << _walk.keys.size() << " views, " << walkDuration(_walk)
-              << " s); p stops\n";
+              << " s); p stops" << std::endl;
 }
 
 void WalkManipulator::recordKey(double now)
@@ -208,7 +208,7 @@ void WalkManipulator::toggleRecording(double now, osgGA::GUIActionAdapter& aa)
 {
     if (_recordPath.empty())
     {
-        std::cout << "osgvisviewer: start the viewer with --record FILE to record the eye path\n";
+        std::cout << "osgvisviewer: start the viewer with --record FILE to record the eye path" << std::endl;
         return;
     }
     if (!_recording)
@@ -218,7 +218,7 @@ void WalkManipulator::toggleRecording(double now, osgGA::GUIActionAdapter& aa)
         _recorded = core::Walk();
         _recorded.projection = _walk.projection;
         recordKey(now);
-        std::cout << "osgvisviewer: recording the eye path; r stops and saves to " << _recordPath << "\n";
+        std::cout << "osgvisviewer: recording the eye path; r stops and saves to " << _recordPath << std::endl;
         return;
     }
     _recording = false;
@@ -230,7 +230,7 @@ void WalkManipulator::toggleRecording(double now, osgGA::GUIActionAdapter& aa)
     try
     {
         _recorded.save(_recordPath);
-        std::cout << "osgvisviewer: saved " << _recorded.keys.size() << " views to " << _recordPath << "\n";
+        std::cout << "osgvisviewer: saved " << _recorded.keys.size() << " views to " << _recordPath << std::endl;
     }
     catch (const std::exception& e)
     {
@@ -313,7 +313,7 @@ bool WalkManipulator::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionA
     }
     case osgGA::GUIEventAdapter::SCROLL:
         _speed *= ea.getScrollingMotion() == osgGA::GUIEventAdapter::SCROLL_UP ? 1.25 : 0.8;
-        std::cout << "osgvisviewer: speed " << _speed << " units/s\n";
+        std::cout << "osgvisviewer: speed " << _speed << " units/s" << std::endl;
         return true;
     default:
         return false;
