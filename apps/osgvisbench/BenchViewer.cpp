@@ -24,6 +24,8 @@ struct FinishFrame : osg::Camera::DrawCallback
 osg::ref_ptr<osg::GraphicsContext> createPbuffer(unsigned width, unsigned height)
 {
     osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
+    traits->readDISPLAY();
+    traits->setUndefinedScreenDetailsToDefaultScreen();
     traits->x = 0;
     traits->y = 0;
     traits->width = int(width);

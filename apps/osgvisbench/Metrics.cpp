@@ -118,16 +118,15 @@ void relateToBaselines(std::vector<ModeResult>& results)
 {
     const ModeResult* osg = findKind(results, BenchMode::Kind::OsgDefault);
     const ModeResult* exact = findKind(results, BenchMode::Kind::Exact);
-    const std::optional<double> osgFps = osg ? osg->metrics.fps : std::nullopt;
-    const std::optional<double> exactFps = exact ? exact->metrics.fps : std::nullopt;
+    // 0 stands for "no baseline": ratio() answers nullopt for it.
+    const double osgFps = osg ? osg->metrics.fps.value_or(0.0) : 0.0;
+    const double exactFps = exact ? exact->metrics.fps.value_or(0.0) : 0.0;
     for (ModeResult& result : results)
     {
         if (!result.metrics.fps)
             continue;
-        if (osgFps)
-            result.metrics.speedupVsOsg = ratio(*result.metrics.fps, *osgFps);
-        if (exactFps)
-            result.metrics.fpsVsExact = ratio(*result.metrics.fps, *exactFps);
+        result.metrics.speedupVsOsg = ratio(*result.metrics.fps, osgFps);
+        result.metrics.fpsVsExact = ratio(*result.metrics.fps, exactFps);
     }
 }
 } // namespace osgVis::bench

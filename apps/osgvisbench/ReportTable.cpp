@@ -17,6 +17,11 @@ std::string formatted(const std::optional<double>& value, const char* format, do
     return text;
 }
 
+std::string leftCell(const std::string& text, std::size_t width)
+{
+    return text.size() >= width ? text : text + std::string(width - text.size(), ' ');
+}
+
 std::string cell(const std::string& text, int width)
 {
     return text.size() >= std::size_t(width) ? text + " " : std::string(std::size_t(width) - text.size(), ' ') + text;
@@ -33,14 +38,13 @@ void writeReportTable(std::ostream& out, const BenchReport& report)
     std::size_t nameWidth = 4;
     for (const ModeResult& result : report.modes)
         nameWidth = std::max(nameWidth, result.mode.name.size());
-    const int w = int(nameWidth);
-    out << std::string(nameWidth - 4, ' ') << "mode" << cell("false-invis", 12) << cell("efficacy", 10)
-        << cell("occl.eff", 10) << cell("overest", 9) << cell("drawn%", 8) << cell("cull ms med/p99", 17)
-        << cell("fps", 9) << cell("speedup", 9) << "\n";
+    out << leftCell("mode", nameWidth) << cell("false-invis", 12) << cell("efficacy", 10) << cell("occl.eff", 10)
+        << cell("overest", 9) << cell("drawn%", 8) << cell("cull ms med/p99", 17) << cell("fps", 9)
+        << cell("speedup", 9) << "\n";
     for (const ModeResult& result : report.modes)
     {
         const ModeMetrics& m = result.metrics;
-        out << cell(result.mode.name, w) << cell(std::to_string(m.falseInvisible), 12)
+        out << leftCell(result.mode.name, nameWidth) << cell(std::to_string(m.falseInvisible), 12)
             << cell(formatted(m.efficacy, "%.3f"), 10) << cell(formatted(m.occlusionEfficacy, "%.3f"), 10)
             << cell(formatted(m.overestimation, "%.2f"), 9) << cell(formatted(m.drawnFraction, "%.1f", 100.0), 8)
             << cell(formatted(m.cullMsMedian, "%.2f") + "/" + formatted(m.cullMsP99, "%.2f"), 17)
