@@ -125,9 +125,10 @@ TEST_P(GenKind, WalkIsLongSmoothAndInsideTheScene)
 
 TEST_P(GenKind, WalkNeverEntersSolidObjects)
 {
-    for (std::uint32_t seed : {1u, 2u, 3u})
+    const std::pair<std::uint64_t, std::uint32_t> cases[] = {{20000, 1}, {20000, 2}, {20000, 3}, {200000, 4}};
+    for (const auto& [budget, seed] : cases)
     {
-        const gen::GeneratedScene scene = make(GetParam(), 20000, seed);
+        const gen::GeneratedScene scene = make(GetParam(), budget, seed);
         std::vector<osg::BoundingBox> solids;
         for (const auto& d : drawablesOf(*scene.root))
             if (d.name == solidName(GetParam()))

@@ -70,13 +70,14 @@ SceneModel thinSlit()
 
 // The frame seen by the eye at the origin (x right, z up, looking along +y):
 //
-//   S---------S---------S      S: 0.5 m cubes at 10 m straddling the frame, two pixels of each inside
-//   | i       i       i |      i: 0.3 m cubes at 20 m wholly inside, one pixel from the border
+//   S---------S---------S      S: 0.5 m plates at 10 m straddling the frame, two pixels of each inside
+//   | i       i       i |      i: 0.3 m plates at 20 m wholly inside, one pixel from the border
 //   S i               i S
 //   | i       i       i |
 //   S---------S---------S
 //
-// Cubes sit at every edge midpoint and every corner; nothing else is in the scene.
+// Plates (2 cm deep, facing the eye) sit at every edge midpoint and every corner; nothing else is in
+// the scene.
 SceneModel frameEdges()
 {
     SceneModel scene;
@@ -99,8 +100,10 @@ SceneModel frameEdges()
                     const double inner = half - pixelsInside * pixel;
                     return side * (straddling ? inner + 0.5 * size : inner - 0.5 * size);
                 };
-                const osg::Vec3d centre(place(sx, halfWidth), distance + 0.5 * size, place(sz, halfHeight));
-                meshes.push_back(cube(straddling ? "straddling" : "inside", palette::target, centre, size));
+                // Thin plates facing the eye: a deep box's side faces would reach further into the frame.
+                const osg::Vec3d centre(place(sx, halfWidth), distance, place(sz, halfHeight));
+                const osg::Vec3d half(0.5 * size, 0.01, 0.5 * size);
+                meshes.push_back(boxMesh(straddling ? "straddling" : "inside", palette::target, centre - half, centre + half));
             }
     };
     ring(10.0, 0.5, 2.0, true);
