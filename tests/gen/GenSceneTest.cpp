@@ -135,9 +135,14 @@ TEST_P(GenKind, WalkNeverEntersSolidObjects)
                 solids.push_back(d.worldBounds);
         ASSERT_FALSE(solids.empty());
         for (std::size_t i = 0; i < scene.walk.keys.size(); ++i)
+        {
+            const osg::Vec3 eye = eyeOf(scene.walk.keys[i]);
+            // Halfway to the previous view too: a wall is about as thick as one office step.
+            const osg::Vec3 between = i > 0 ? (eye + eyeOf(scene.walk.keys[i - 1])) * 0.5f : eye;
             for (const osg::BoundingBox& box : solids)
-                ASSERT_FALSE(box.contains(eyeOf(scene.walk.keys[i])))
+                ASSERT_FALSE(box.contains(eye) || box.contains(between))
                     << "seed " << seed << " view " << i << " is inside a " << solidName(GetParam());
+        }
     }
 }
 
@@ -182,6 +187,33 @@ TEST(GenOffice, PlacesFurnitureByTransformsSharingDrawables)
     } transforms;
     scene.root->accept(transforms);
     EXPECT_GT(transforms.count, 10);
+}
+
+TEST(GenOffice, WalkEntersRoomsAndUsesCorridors)
+{
+    const gen::GeneratedScene scene = make(gen::SceneKind::Office, 200000);
+    std::vector<osg::BoundingBox> rooms, corridors;
+    for (const auto& d : drawablesOf(*scene.root))
+    {
+        if (d.name == "floor")
+            rooms.push_back(d.worldBounds);
+        if (d.name == "corridor floor")
+            corridors.push_back(d.worldBounds);
+    }
+    auto over = [](const std::vector<osg::BoundingBox>& floors, const osg::Vec3& eye) {
+        for (const osg::BoundingBox& f : floors)
+            if (eye.x() > f.xMin() && eye.x() < f.xMax() && eye.y() > f.yMin() && eye.y() < f.yMax())
+                return true;
+        return false;
+    };
+    std::size_t inRooms = 0, inCorridors = 0;
+    for (const auto& key : scene.walk.keys)
+    {
+        inRooms += over(rooms, eyeOf(key)) ? 1 : 0;
+        inCorridors += over(corridors, eyeOf(key)) ? 1 : 0;
+    }
+    EXPECT_GT(inRooms, 100u);
+    EXPECT_GT(inCorridors, 100u);
 }
 
 TEST(GenOffice, LargeBudgetsStackStoreys)

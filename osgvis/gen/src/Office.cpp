@@ -120,9 +120,9 @@ private:
     }
 
     void addFloorAndCeiling(ModelNode& geode, double x0, double y0, double x1, double y1, double z,
-                            const osg::Vec4& floorColour)
+                            const osg::Vec4& floorColour, const char* floorName)
     {
-        geode.meshes.push_back(_model.addMesh(quadMesh("floor", floorColour, horizontalQuad(x0, y0, x1, y1, z, true))));
+        geode.meshes.push_back(_model.addMesh(quadMesh(floorName, floorColour, horizontalQuad(x0, y0, x1, y1, z, true))));
         geode.meshes.push_back(_model.addMesh(
             quadMesh("ceiling", palette::ceiling, horizontalQuad(x0, y0, x1, y1, z + wallHeight, false))));
     }
@@ -154,7 +154,7 @@ private:
         const double x0 = corridorWidth, x1 = corridorWidth + _layout.columns * roomWidth;
 
         ModelNode corridor = ModelNode::geode("corridor " + std::to_string(s) + "/" + std::to_string(k));
-        addFloorAndCeiling(corridor, x0, y0 + roomDepth, x1, y0 + roomDepth + corridorWidth, z, palette::corridorFloor);
+        addFloorAndCeiling(corridor, x0, y0 + roomDepth, x1, y0 + roomDepth + corridorWidth, z, palette::corridorFloor, "corridor floor");
         storey.add(std::move(corridor));
 
         addStrip(storey, s, k, false, y0);
@@ -180,7 +180,7 @@ private:
             const std::string id = std::to_string(s) + "/" + std::to_string(k) + (stripB ? "B" : "A") + std::to_string(c);
             ModelNode room = ModelNode::group("room " + id);
             ModelNode shell = ModelNode::geode("room shell " + id);
-            addFloorAndCeiling(shell, xa, ya, xb, yb, z, varied(palette::floor, _rng, 0.05));
+            addFloorAndCeiling(shell, xa, ya, xb, yb, z, varied(palette::floor, _rng, 0.05), "floor");
 
             const double alongEnd = last ? xb + half : xb - half;
             WallSpec corridorWall = wall(true, xa - half, alongEnd, stripB ? ya : yb, z);
@@ -246,7 +246,7 @@ private:
         const double sizeX = _layout.sizeX(), sizeY = _layout.sizeY();
         const double x0 = east ? sizeX - corridorWidth : 0.0, x1 = x0 + corridorWidth;
         ModelNode geode = ModelNode::geode(std::string(east ? "east" : "west") + " corridor " + std::to_string(s));
-        addFloorAndCeiling(geode, x0, 0.0, x1, sizeY, z, palette::corridorFloor);
+        addFloorAndCeiling(geode, x0, 0.0, x1, sizeY, z, palette::corridorFloor, "corridor floor");
         const double outerX = east ? x1 : x0;
         addMeshes(geode, wallPieces(wall(false, half, sizeY - half, outerX, z), "wall", palette::wall));
         // End walls along x continue the strips' back walls (which own x up to corridorWidth ± half).
