@@ -47,7 +47,8 @@ std::uint64_t parseUnsigned(const std::string& option, const std::string& text, 
         throw UsageError(option + " needs a whole number, got '" + text + "'");
     const std::uint64_t value = std::stoull(text);
     if (value < lo || value > hi)
-        throw UsageError(option + " " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        throw UsageError(option + " " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                         "]");
     return value;
 }
 
@@ -76,7 +77,8 @@ Options parse(int argc, char** argv)
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
-        auto value = [&]() -> std::string {
+        auto value = [&]() -> std::string
+        {
             if (i + 1 >= argc)
                 throw UsageError(arg + " needs a value");
             return argv[++i];
@@ -150,7 +152,8 @@ int run(const Options& o)
 
     if (!osgDB::writeNodeFile(*scene.root, o.output))
     {
-        std::cerr << "osgvisgen: cannot write '" << o.output << "' (missing directory, no permission, or no osgDB plugin for its extension)\n";
+        std::cerr << "osgvisgen: cannot write '" << o.output
+                  << "' (missing directory, no permission, or no osgDB plugin for its extension)\n";
         return 1;
     }
     const std::string walkPath = walkPathFor(o.output);

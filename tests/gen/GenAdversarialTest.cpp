@@ -89,9 +89,9 @@ TEST(GenAdversarial, DegenerateOccludersIncludeANaNVertex)
 TEST(GenAdversarial, EyeLiesExactlyOnAWallPlane)
 {
     const gen::GeneratedScene scene = gen::adversarialScene("eye-on-occluder-plane");
-    EXPECT_EQ(scene.walk.keys[0].eye.x, 0.0);  // plane of the zero-thickness wall
-    EXPECT_EQ(scene.walk.keys[1].eye.x, 3.0);  // plane of the box wall's face
-    EXPECT_EQ(scene.walk.keys[2].eye.z, 3.0);  // plane of the box wall's top
+    EXPECT_EQ(scene.walk.keys[0].eye.x, 0.0); // plane of the zero-thickness wall
+    EXPECT_EQ(scene.walk.keys[1].eye.x, 3.0); // plane of the box wall's face
+    EXPECT_EQ(scene.walk.keys[2].eye.z, 3.0); // plane of the box wall's top
 }
 
 TEST(GenAdversarial, GeodeOneHiddenIsOneGeodeOfManyDrawables)

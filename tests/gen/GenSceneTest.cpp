@@ -46,16 +46,22 @@ osg::BoundingBox sceneBounds(osg::Node& root)
     return box;
 }
 
-osg::Vec3 eyeOf(const osgVis::core::WalkKey& key) { return {float(key.eye.x), float(key.eye.y), float(key.eye.z)}; }
+osg::Vec3 eyeOf(const osgVis::core::WalkKey& key)
+{
+    return {float(key.eye.x), float(key.eye.y), float(key.eye.z)};
+}
 
 // Drawables a walk must never pass through, by kind.
 const char* solidName(gen::SceneKind kind)
 {
     switch (kind)
     {
-    case gen::SceneKind::Office: return "wall";
-    case gen::SceneKind::City: return "building";
-    case gen::SceneKind::Tetra: return "tetra";
+    case gen::SceneKind::Office:
+        return "wall";
+    case gen::SceneKind::City:
+        return "building";
+    case gen::SceneKind::Tetra:
+        return "tetra";
     }
     return "";
 }
@@ -90,7 +96,8 @@ TEST_P(GenKind, TriangleCountIsWithinTenPercentOfTheBudget)
     {
         const gen::GeneratedScene scene = make(GetParam(), budget);
         const double triangles = double(gen::sceneStats(*scene.root).triangles);
-        EXPECT_NEAR(triangles, double(budget), 0.1 * double(budget)) << gen::sceneKindName(GetParam()) << " at " << budget;
+        EXPECT_NEAR(triangles, double(budget), 0.1 * double(budget))
+            << gen::sceneKindName(GetParam()) << " at " << budget;
     }
 }
 
@@ -200,7 +207,8 @@ TEST(GenOffice, WalkEntersRoomsAndUsesCorridors)
         if (d.name == "corridor floor")
             corridors.push_back(d.worldBounds);
     }
-    auto over = [](const std::vector<osg::BoundingBox>& floors, const osg::Vec3& eye) {
+    auto over = [](const std::vector<osg::BoundingBox>& floors, const osg::Vec3& eye)
+    {
         for (const osg::BoundingBox& f : floors)
             if (eye.x() > f.xMin() && eye.x() < f.xMax() && eye.y() > f.yMin() && eye.y() < f.yMax())
                 return true;

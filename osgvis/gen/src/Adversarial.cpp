@@ -17,7 +17,10 @@ namespace
 {
 constexpr double keyStep = 0.1;
 
-osg::Vec3d along(double x, double y, double z) { return {x, y, z}; }
+osg::Vec3d along(double x, double y, double z)
+{
+    return {x, y, z};
+}
 
 // A geode (named after the scene) holding each mesh as its own drawable.
 ModelNode& addGeode(Model& model, const std::string& name, std::vector<Mesh> meshes)
@@ -61,8 +64,8 @@ SceneModel thinSlit()
               boxMesh("wall right", palette::occluder, {0.5 * gap, -0.075, 0.0}, {4.0 + 0.5 * gap, 0.075, 3.0}),
               boxMesh("target", palette::target, {-0.5, 5.0, 0.0}, {0.5, 6.0, 1.0})});
     std::vector<core::WalkKey> keys;
-    for (const osg::Vec3d& eye : {along(0, -5, 0.5), along(0.05, -5, 0.5), along(-0.03, -8, 0.5), along(0, -10, 0.5),
-                                  along(0, -20, 0.5)})
+    for (const osg::Vec3d& eye :
+         {along(0, -5, 0.5), along(0.05, -5, 0.5), along(-0.03, -8, 0.5), along(0, -10, 0.5), along(0, -20, 0.5)})
         keys.push_back(lookAt(keyStep * double(keys.size()), eye, {0.0, 5.5, 0.5}));
     scene.walk = perspectiveWalk(keys, 0.1, 100.0);
     return scene;
@@ -84,7 +87,8 @@ SceneModel frameEdges()
     const double tanHalfFov = 1.0 / std::sqrt(3.0); // tan 30°
     const double aspect = 1280.0 / 1024.0;
     std::vector<Mesh> meshes;
-    auto ring = [&](double distance, double size, double pixelsInside, bool straddling) {
+    auto ring = [&](double distance, double size, double pixelsInside, bool straddling)
+    {
         const double halfHeight = distance * tanHalfFov, halfWidth = aspect * halfHeight;
         const double pixel = 2.0 * halfHeight / 1024.0;
         for (int sz = -1; sz <= 1; ++sz)
@@ -94,7 +98,8 @@ SceneModel frameEdges()
                     continue;
                 // Inner face `pixelsInside` pixels inside the border; the cube extends outward (straddling)
                 // or inward from there.
-                auto place = [&](int side, double half) {
+                auto place = [&](int side, double half)
+                {
                     if (side == 0)
                         return 0.0;
                     const double inner = half - pixelsInside * pixel;
@@ -103,7 +108,8 @@ SceneModel frameEdges()
                 // Thin plates facing the eye: a deep box's side faces would reach further into the frame.
                 const osg::Vec3d centre(place(sx, halfWidth), distance, place(sz, halfHeight));
                 const osg::Vec3d half(0.5 * size, 0.01, 0.5 * size);
-                meshes.push_back(boxMesh(straddling ? "straddling" : "inside", palette::target, centre - half, centre + half));
+                meshes.push_back(
+                    boxMesh(straddling ? "straddling" : "inside", palette::target, centre - half, centre + half));
             }
     };
     ring(10.0, 0.5, 2.0, true);
@@ -198,12 +204,24 @@ SceneModel degenerateOccluders()
         std::vector<osg::Vec3d> polygon;
         switch (i)
         {
-        case 0: polygon = {p(-0.4, -0.4), p(0.0, 0.0), p(0.4, 0.4), p(0.2, 0.2)}; break;
-        case 1: polygon = {p(-0.4, -0.4), p(0.4, 0.4), p(0.4, 0.401)}; break;
-        case 2: polygon = {p(-0.4, -0.4), p(0.4, 0.4), p(0.4, 0.4), p(-0.4, -0.4)}; break;
-        case 3: polygon = {p(-0.45, -0.4), p(-0.02, -0.4, -0.5), p(-0.02, 0.4, 0.5), p(-0.45, 0.4)}; break;
-        case 4: polygon = {osg::Vec3d(nan, nan, nan), p(-0.45, -0.3), p(0.45, -0.3), p(0.0, 0.6)}; break;
-        case 5: polygon = {p(-0.4, -0.4), p(0.4, 0.4), p(0.4, -0.4), p(-0.4, 0.4)}; break;
+        case 0:
+            polygon = {p(-0.4, -0.4), p(0.0, 0.0), p(0.4, 0.4), p(0.2, 0.2)};
+            break;
+        case 1:
+            polygon = {p(-0.4, -0.4), p(0.4, 0.4), p(0.4, 0.401)};
+            break;
+        case 2:
+            polygon = {p(-0.4, -0.4), p(0.4, 0.4), p(0.4, 0.4), p(-0.4, -0.4)};
+            break;
+        case 3:
+            polygon = {p(-0.45, -0.4), p(-0.02, -0.4, -0.5), p(-0.02, 0.4, 0.5), p(-0.45, 0.4)};
+            break;
+        case 4:
+            polygon = {osg::Vec3d(nan, nan, nan), p(-0.45, -0.3), p(0.45, -0.3), p(0.0, 0.6)};
+            break;
+        case 5:
+            polygon = {p(-0.4, -0.4), p(0.4, 0.4), p(0.4, -0.4), p(-0.4, 0.4)};
+            break;
         }
         Mesh mesh;
         mesh.name = names[i];
@@ -271,8 +289,10 @@ SceneModel movingOccluder()
 {
     SceneModel scene;
     addGeode(scene.model, "targets",
-             {cube("hidden", palette::target, {0.0, 12.5, 0.0}, 1.0), cube("beside", palette::target, {4.0, 12.5, 0.0}, 1.0)});
-    ModelNode& mover = scene.model.root.add(ModelNode::transform("moving wall", osg::Matrixd::translate(0.0, 6.0, 0.0)));
+             {cube("hidden", palette::target, {0.0, 12.5, 0.0}, 1.0),
+              cube("beside", palette::target, {4.0, 12.5, 0.0}, 1.0)});
+    ModelNode& mover =
+        scene.model.root.add(ModelNode::transform("moving wall", osg::Matrixd::translate(0.0, 6.0, 0.0)));
     mover.dynamic = true;
     mover.add(ModelNode::geode("moving wall"))
         .meshes.push_back(scene.model.addMesh(boxMesh("wall", palette::occluder, {-2.0, -0.1, -1.5}, {2.0, 0.1, 1.5})));

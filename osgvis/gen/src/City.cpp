@@ -68,7 +68,8 @@ public:
         SceneModel scene;
         const double size = _blocks * pitch + streetWidth;
         const osg::BoundingBoxd bounds(0.0, 0.0, 0.0, size, size, maxHeight);
-        scene.walk = perspectiveWalk(walkAlong(route(), WalkPace{10.0, 0.1, 12.0, 200, 1000}), 0.1, farPlaneFor(bounds));
+        scene.walk =
+            perspectiveWalk(walkAlong(route(), WalkPace{10.0, 0.1, 12.0, 200, 1000}), 0.1, farPlaneFor(bounds));
         scene.model = std::move(_model);
         return scene;
     }
@@ -107,7 +108,8 @@ private:
                     _model.addMesh(boxMesh("building", varied(palette::building, _rng, 0.15), lo, hi, NO_BOTTOM)));
             }
 
-        ModelNode& lampPost = block.add(ModelNode::transform("lamp", quarterTurn(_rng.between(0, 3), {x0 + 1.0, y0 + 1.0, kerbHeight})));
+        ModelNode& lampPost =
+            block.add(ModelNode::transform("lamp", quarterTurn(_rng.between(0, 3), {x0 + 1.0, y0 + 1.0, kerbHeight})));
         lampPost.add(ModelNode::geode("lamp")).meshes.push_back(lamp);
     }
 
@@ -122,7 +124,8 @@ private:
     {
         static const int dx[4] = {1, 0, -1, 0}, dy[4] = {0, 1, 0, -1};
         int ix = int(_rng.below(std::uint32_t(_blocks + 1))), iy = int(_rng.below(std::uint32_t(_blocks + 1)));
-        auto inside = [&](int d) {
+        auto inside = [&](int d)
+        {
             const int nx = ix + dx[d], ny = iy + dy[d];
             return nx >= 0 && ny >= 0 && nx <= _blocks && ny <= _blocks;
         };

@@ -15,7 +15,8 @@ struct KindName
     SceneKind kind;
     const char* name;
 };
-constexpr KindName kindNames[] = {{SceneKind::Office, "office"}, {SceneKind::City, "city"}, {SceneKind::Tetra, "tetra"}};
+constexpr KindName kindNames[] = {
+    {SceneKind::Office, "office"}, {SceneKind::City, "city"}, {SceneKind::Tetra, "tetra"}};
 
 // Under a plain headlight, floors and ceilings seen edge-on get no diffuse light and draw black; a
 // global ambient term keeps every surface readable in screenshots, and two-sided lighting lights
@@ -44,9 +45,15 @@ GeneratedScene generate(const GenerateOptions& options)
     SceneModel scene;
     switch (options.kind)
     {
-    case SceneKind::Office: scene = officeModel(options.triangles, options.seed); break;
-    case SceneKind::City: scene = cityModel(options.triangles, options.seed); break;
-    case SceneKind::Tetra: scene = tetraModel(options.triangles, options.seed); break;
+    case SceneKind::Office:
+        scene = officeModel(options.triangles, options.seed);
+        break;
+    case SceneKind::City:
+        scene = cityModel(options.triangles, options.seed);
+        break;
+    case SceneKind::Tetra:
+        scene = tetraModel(options.triangles, options.seed);
+        break;
     }
     const double density = calibrateDensity(scene.model, options.triangles);
     return mesh(std::move(scene), density);

@@ -56,7 +56,10 @@ osg::Vec3 unitNormal(const osg::Vec3d& n)
 class GeometryWriter
 {
 public:
-    GeometryWriter() : _vertices(new osg::Vec3Array), _normals(new osg::Vec3Array), _indices(new osg::DrawElementsUInt(GL_TRIANGLES)) {}
+    GeometryWriter()
+        : _vertices(new osg::Vec3Array), _normals(new osg::Vec3Array), _indices(new osg::DrawElementsUInt(GL_TRIANGLES))
+    {
+    }
 
     void addQuad(const Quad& q, std::uint32_t nu, std::uint32_t nv)
     {
@@ -273,7 +276,8 @@ double calibrateDensity(const Model& model, std::uint64_t target)
         const double mid = 0.5 * (lo + hi);
         (count(mid) < target ? lo : hi) = mid;
     }
-    const auto distance = [&](double density) {
+    const auto distance = [&](double density)
+    {
         const std::uint64_t c = count(density);
         return c > target ? c - target : target - c;
     };

@@ -122,7 +122,8 @@ private:
     void addFloorAndCeiling(ModelNode& geode, double x0, double y0, double x1, double y1, double z,
                             const osg::Vec4& floorColour, const char* floorName)
     {
-        geode.meshes.push_back(_model.addMesh(quadMesh(floorName, floorColour, horizontalQuad(x0, y0, x1, y1, z, true))));
+        geode.meshes.push_back(
+            _model.addMesh(quadMesh(floorName, floorColour, horizontalQuad(x0, y0, x1, y1, z, true))));
         geode.meshes.push_back(_model.addMesh(
             quadMesh("ceiling", palette::ceiling, horizontalQuad(x0, y0, x1, y1, z + wallHeight, false))));
     }
@@ -154,7 +155,8 @@ private:
         const double x0 = corridorWidth, x1 = corridorWidth + _layout.columns * roomWidth;
 
         ModelNode corridor = ModelNode::geode("corridor " + std::to_string(s) + "/" + std::to_string(k));
-        addFloorAndCeiling(corridor, x0, y0 + roomDepth, x1, y0 + roomDepth + corridorWidth, z, palette::corridorFloor, "corridor floor");
+        addFloorAndCeiling(corridor, x0, y0 + roomDepth, x1, y0 + roomDepth + corridorWidth, z, palette::corridorFloor,
+                           "corridor floor");
         storey.add(std::move(corridor));
 
         addStrip(storey, s, k, false, y0);
@@ -177,7 +179,8 @@ private:
             const double xa = corridorWidth + c * roomWidth, xb = xa + roomWidth;
             const bool last = c == columns - 1;
             const osg::Vec4 wallColour = varied(palette::wall, _rng, 0.06);
-            const std::string id = std::to_string(s) + "/" + std::to_string(k) + (stripB ? "B" : "A") + std::to_string(c);
+            const std::string id =
+                std::to_string(s) + "/" + std::to_string(k) + (stripB ? "B" : "A") + std::to_string(c);
             ModelNode room = ModelNode::group("room " + id);
             ModelNode shell = ModelNode::geode("room shell " + id);
             addFloorAndCeiling(shell, xa, ya, xb, yb, z, varied(palette::floor, _rng, 0.05), "floor");
@@ -269,9 +272,8 @@ private:
             const double yc = corridorY(k);
             const bool eastward = k % 2 == 0;
             std::vector<CorridorDoor> doors = _doors[std::size_t(k)];
-            std::sort(doors.begin(), doors.end(), [&](const CorridorDoor& a, const CorridorDoor& b) {
-                return eastward ? a.x < b.x : a.x > b.x;
-            });
+            std::sort(doors.begin(), doors.end(),
+                      [&](const CorridorDoor& a, const CorridorDoor& b) { return eastward ? a.x < b.x : a.x > b.x; });
             bool visited = false;
             for (std::size_t i = 0; i < doors.size(); ++i)
             {

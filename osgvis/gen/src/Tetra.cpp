@@ -84,8 +84,9 @@ public:
                 ModelNode node = ModelNode::transform("tile " + std::to_string(i) + "," + std::to_string(j),
                                                       osg::Matrixd::translate(corner));
                 ModelNode& geode = node.add(ModelNode::geode("tetrahedra"));
-                geode.meshes.push_back(_model.addMesh(quadMesh(
-                    "ground", varied(palette::ground, _rng, 0.03), horizontalQuad(0, 0, tile, tile, 0, true), groundDensityScale)));
+                geode.meshes.push_back(
+                    _model.addMesh(quadMesh("ground", varied(palette::ground, _rng, 0.03),
+                                            horizontalQuad(0, 0, tile, tile, 0, true), groundDensityScale)));
                 tileNodes.push_back(std::move(node));
             }
 
@@ -148,7 +149,8 @@ private:
     {
         const double lo = walkInset * _size, hi = (1.0 - walkInset) * _size;
         const double offset = std::min(turnOffset, 0.25 * (hi - lo));
-        const osg::Vec3d corners[4] = {{lo, lo, eyeHeight}, {hi, lo, eyeHeight}, {hi, hi, eyeHeight}, {lo, hi, eyeHeight}};
+        const osg::Vec3d corners[4] = {
+            {lo, lo, eyeHeight}, {hi, lo, eyeHeight}, {hi, hi, eyeHeight}, {lo, hi, eyeHeight}};
         std::vector<osg::Vec3d> points{(corners[0] + corners[1]) * 0.5};
         for (int c = 1; c <= 4; ++c)
         {

@@ -14,9 +14,8 @@ constexpr double sampleSpacing = 0.02;
 // Barry–Goldman evaluation of the Catmull–Rom segment p1..p2 with knots t0..t3 at parameter t.
 osg::Vec3d catmullRom(const osg::Vec3d p[4], const double k[4], double t)
 {
-    auto lerp = [](const osg::Vec3d& a, const osg::Vec3d& b, double ta, double tb, double t) {
-        return a * ((tb - t) / (tb - ta)) + b * ((t - ta) / (tb - ta));
-    };
+    auto lerp = [](const osg::Vec3d& a, const osg::Vec3d& b, double ta, double tb, double t)
+    { return a * ((tb - t) / (tb - ta)) + b * ((t - ta) / (tb - ta)); };
     const osg::Vec3d a1 = lerp(p[0], p[1], k[0], k[1], t);
     const osg::Vec3d a2 = lerp(p[1], p[2], k[1], k[2], t);
     const osg::Vec3d a3 = lerp(p[2], p[3], k[2], k[3], t);

@@ -29,9 +29,9 @@ private:
 
 struct WalkPace
 {
-    double speed = 1.4;      // metres per second
-    double timeStep = 0.1;   // seconds between views
-    double lookAhead = 2.0;  // metres along the path to the point looked at
+    double speed = 1.4;     // metres per second
+    double timeStep = 0.1;  // seconds between views
+    double lookAhead = 2.0; // metres along the path to the point looked at
     std::size_t minViews = 200;
     std::size_t maxViews = 1000;
 };
@@ -40,7 +40,10 @@ struct WalkPace
 // one too long is cut at `maxViews`.
 std::vector<core::WalkKey> walkAlong(std::vector<osg::Vec3d> route, const WalkPace& pace);
 
-inline core::Vec3 toCore(const osg::Vec3d& v) { return {v.x(), v.y(), v.z()}; }
+inline core::Vec3 toCore(const osg::Vec3d& v)
+{
+    return {v.x(), v.y(), v.z()};
+}
 
 // One view at time t from `eye` towards `centre`, z up.
 core::WalkKey lookAt(double time, const osg::Vec3d& eye, const osg::Vec3d& centre);
