@@ -69,8 +69,12 @@ std::vector<Camera> randomViews(unsigned count, std::uint32_t seed)
         const osg::Vec3d centre(3 * unit(random), 3 * unit(random), 3 * unit(random));
         Camera camera;
         camera.view = osg::Matrixd::lookAt(eye, centre, std::abs(eye.z()) > 20 ? osg::Vec3d(0, 1, 0) : osg::Vec3d(0, 0, 1));
-        camera.projection = (views.size() % 3 == 2) ? osg::Matrixd::ortho(-12, 12, -12, 12, 1, 60)
-                                                    : osg::Matrixd::perspective(50.0, 1.0, 1.0, 60.0);
+        switch (views.size() % 3)
+        {
+        case 0: camera.projection = osg::Matrixd::perspective(50.0, 1.0, 1.0, 60.0); break;
+        case 1: camera.projection = osg::Matrixd::frustum(-0.2, 0.6, -0.5, 0.3, 1.0, 60.0); break;
+        default: camera.projection = osg::Matrixd::ortho(-12, 12, -12, 12, 1, 60); break;
+        }
         views.push_back(camera);
     }
     return views;
@@ -79,7 +83,7 @@ std::vector<Camera> randomViews(unsigned count, std::uint32_t seed)
 
 TEST(OracleCrossCheck, IdBufferAgreesWithRayCastingOnRandomBoxes)
 {
-    constexpr unsigned Size = 256, Views = 8;
+    constexpr unsigned Size = 256, Views = 15;
     osg::ref_ptr<osg::Group> root = randomBoxes(50, 7);
     OracleSettings settings;
     settings.width = settings.height = Size;
