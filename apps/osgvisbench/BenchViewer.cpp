@@ -2,13 +2,14 @@
 
 #include "../osgvisviewer/CameraSetup.h"
 
+#include <osgVis/oracle/OffscreenContext.h>
+
 #include <osg/GL>
 #include <osgUtil/GLObjectsVisitor>
 #include <osgViewer/Renderer>
 
 #include <chrono>
 #include <limits>
-#include <string>
 
 namespace osgVis::bench
 {
@@ -20,28 +21,6 @@ struct FinishFrame : osg::Camera::DrawCallback
 {
     void operator()(osg::RenderInfo&) const override { glFinish(); }
 };
-
-osg::ref_ptr<osg::GraphicsContext> createPbuffer(unsigned width, unsigned height)
-{
-    osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
-    traits->readDISPLAY();
-    traits->setUndefinedScreenDetailsToDefaultScreen();
-    traits->x = 0;
-    traits->y = 0;
-    traits->width = int(width);
-    traits->height = int(height);
-    traits->red = traits->green = traits->blue = traits->alpha = 8;
-    traits->depth = 24;
-    traits->windowDecoration = false;
-    traits->doubleBuffer = false;
-    traits->pbuffer = true;
-    traits->sharedContext = nullptr;
-    osg::ref_ptr<osg::GraphicsContext> context = osg::GraphicsContext::createGraphicsContext(traits.get());
-    if (!context || !context->valid())
-        throw ViewerError("cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
-                          " OpenGL pbuffer (no X display? run under xvfb-run)");
-    return context;
-}
 } // namespace
 
 BenchViewer::BenchViewer(unsigned width, unsigned height, const core::WalkProjection& projection, osg::Node& model)
@@ -52,7 +31,9 @@ BenchViewer::BenchViewer(unsigned width, unsigned height, const core::WalkProjec
     _viewer->setQuitEventSetsDone(false);
 
     osg::Camera* camera = _viewer->getCamera();
-    camera->setGraphicsContext(createPbuffer(width, height).get());
+    // The oracle's context helper: same pixel format, and it retries the X connection Xvfb sometimes
+    // refuses when processes connect in quick succession.
+    camera->setGraphicsContext(oracle::createOffscreenContext(width, height).get());
     camera->setViewport(0, 0, int(width), int(height));
     camera->setDrawBuffer(GL_FRONT);
     camera->setReadBuffer(GL_FRONT);

@@ -23,7 +23,7 @@ class BenchViewer
 {
 public:
     // Compiles the GL objects of `model` once at realize, so that no mode pays the first upload of
-    // buffers and textures inside its timed frames. Throws ViewerError when no pbuffer can be made.
+    // buffers and textures inside its timed frames. Throws std::runtime_error when no pbuffer can be made.
     BenchViewer(unsigned width, unsigned height, const core::WalkProjection& projection, osg::Node& model);
 
     void setSceneData(osg::Node* scene);
