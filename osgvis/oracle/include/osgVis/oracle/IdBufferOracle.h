@@ -25,6 +25,8 @@ class IdRenderer;
 //
 // Owns one offscreen (pbuffer + FBO) viewer per resolution, made current only inside visible(), so
 // another viewer in the same process is not disturbed. Needs a display (Xvfb). Not thread-safe.
+// note: while it lives, its transforms are extra parents of the application's drawables
+// (Drawable::getParentalNodePaths() sees them); they go with it.
 class IdBufferOracle
 {
 public:
