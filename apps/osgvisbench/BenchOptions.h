@@ -2,7 +2,6 @@
 // Command line of osgvisbench: what scene, which walk, which modes, at what size, and where the
 // JSON goes. Parsing only: nothing here loads a file or touches GL.
 #include <cstdint>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
