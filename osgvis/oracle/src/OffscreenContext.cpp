@@ -15,7 +15,8 @@ osg::ref_ptr<osg::GraphicsContext> createOffscreenContext(unsigned width, unsign
     traits->y = 0;
     traits->width = int(width);
     traits->height = int(height);
-    traits->red = traits->green = traits->blue = traits->alpha = 8;
+    traits->red = traits->green = traits->blue = 8;
+    traits->alpha = 0; // note: with alpha, Xvfb answers the viewer's pbuffer swap with BadMatch
     traits->depth = 24;
     traits->samples = 0;
     traits->sampleBuffers = 0;

@@ -4,7 +4,7 @@
 
 namespace osgVis::oracle
 {
-// A single-buffered pbuffer OpenGL context on $DISPLAY (RGBA8, 24-bit depth, no multisampling),
+// A single-buffered pbuffer OpenGL context on $DISPLAY (RGB8 without alpha, 24-bit depth, no multisampling),
 // not realized. Retries: XOpenDisplay fails now and then when a process connects to Xvfb in quick
 // succession (measured: 8% of 2000 back-to-back connections on this machine's Xvfb).
 // Throws std::runtime_error when no context can be had (no display: run under xvfb-run).
