@@ -22,6 +22,7 @@
 #include <set>
 #include <sstream>
 
+using osgVis::test::readText;
 using osgVis::test::runViewer;
 using osgVis::test::scratchDirectory;
 
@@ -34,14 +35,6 @@ std::string frameName(const std::string& dir, const char* prefix, unsigned index
     char name[32];
     std::snprintf(name, sizeof(name), "/%s-%04u.png", prefix, index);
     return dir + name;
-}
-
-std::string readText(const std::string& path)
-{
-    std::ifstream in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 std::size_t distinctColours(const osg::Image& image)

@@ -1,20 +1,17 @@
 #pragma once
-// Runs the built osgvisviewer binary (its path comes in by compile definition) and collects its
-// exit code and everything it printed.
-#include <string>
+// Runs the built osgvisviewer binary (its path comes in by compile definition).
+#include "AppProcess.h"
 
 namespace osgVis::test
 {
-struct ViewerRun
+inline AppRun runViewer(const std::string& arguments)
 {
-    int exitCode = -1;
-    std::string output; // stdout and stderr together
-};
+    return runApp(OSGVIS_VIEWER_EXE, arguments);
+}
 
-// `arguments` are appended to the binary's path as they are (quote paths with spaces yourself).
-ViewerRun runViewer(const std::string& arguments);
-// A fresh, empty folder for one test under the build tree.
-std::string scratchDirectory(const std::string& name);
-// Whether an X display is set: headless rendering needs one (scripts/test.sh provides Xvfb).
-bool haveDisplay();
+// A fresh, empty folder for one viewer test under the build tree.
+inline std::string scratchDirectory(const std::string& name)
+{
+    return scratchDirectory("apps", name).string();
+}
 } // namespace osgVis::test

@@ -3,60 +3,28 @@
 // every scene: conservative modes miss nothing, `exact` draws exactly the oracle's set, OSG's own
 // culling is frustum culling (it never beats the frustum module's efficacy, and both skip some of
 // the scene), and bad input ends with a message and a non-zero status, never a crash.
+#include "AppProcess.h"
 #include "BenchJson.h"
 
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
-using namespace osgVis::bench::test;
+using namespace osgVis::test;
 
 namespace
 {
-struct BenchRun
+AppRun runBench(const std::string& arguments)
 {
-    int exitCode = -1;
-    std::string output; // stdout and stderr together
-};
-
-BenchRun runBench(const std::string& arguments)
-{
-    const std::string command = std::string("'") + OSGVIS_BENCH_EXE + "' " + arguments + " 2>&1";
-    BenchRun run;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe)
-        return run;
-    std::array<char, 4096> buffer{};
-    std::size_t n = 0;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-        run.output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    return run;
+    return runApp(OSGVIS_BENCH_EXE, arguments);
 }
 
 std::filesystem::path scratchFile(const std::string& name)
 {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                      ("osgvisbench-" + std::string(test->name()) + "-" + std::to_string(getpid()));
-    std::filesystem::create_directories(dir);
-    return dir / name;
-}
-
-std::string readText(const std::filesystem::path& path)
-{
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return scratchDirectory("bench", test->name()) / name;
 }
 
 const char* const modeFields[] = {"false_invisible",    "efficacy",       "efficacy_objects",
@@ -67,7 +35,7 @@ const char* const modeFields[] = {"false_invisible",    "efficacy",       "effic
 void expectBenchInvariants(const std::string& kind, const std::string& extraModes)
 {
     const std::filesystem::path json = scratchFile(kind + ".json");
-    const BenchRun run =
+    const AppRun run =
         runBench("--generate " + kind + " --triangles 5000 --views 8 --size 160x128 --modes osg,frustum,exact" +
                  extraModes + " --json '" + json.string() + "'");
     ASSERT_EQ(run.exitCode, 0) << run.output;
@@ -121,7 +89,7 @@ TEST(BenchApp, OfficeMeetsTheContractAndRunsOcclusionQueries)
 
 TEST(BenchApp, UnknownModeExitsTwoBeforeAnyWork)
 {
-    const BenchRun run = runBench("--generate city --triangles 5000 --modes osg,no-such-mode");
+    const AppRun run = runBench("--generate city --triangles 5000 --modes osg,no-such-mode");
     EXPECT_EQ(run.exitCode, 2) << run.output;
     EXPECT_NE(run.output.find("unknown mode 'no-such-mode'"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("frustum"), std::string::npos) << "lists the valid modes: " << run.output;
@@ -130,7 +98,7 @@ TEST(BenchApp, UnknownModeExitsTwoBeforeAnyWork)
 
 TEST(BenchApp, MissingSceneFileFailsWithMessage)
 {
-    const BenchRun run = runBench("--scene /nonexistent/scene.osgb --modes osg");
+    const AppRun run = runBench("--scene /nonexistent/scene.osgb --modes osg");
     EXPECT_NE(run.exitCode, 0);
     EXPECT_LT(run.exitCode, 128) << "must not crash: " << run.output;
     EXPECT_NE(run.output.find("/nonexistent/scene.osgb"), std::string::npos) << run.output;
@@ -140,7 +108,7 @@ TEST(BenchApp, MalformedWalkFailsWithMessage)
 {
     const std::filesystem::path walk = scratchFile("bad.walk");
     std::ofstream(walk) << "this is not a walk\n";
-    const BenchRun run = runBench("--generate city --triangles 5000 --walk '" + walk.string() + "' --modes osg");
+    const AppRun run = runBench("--generate city --triangles 5000 --walk '" + walk.string() + "' --modes osg");
     EXPECT_NE(run.exitCode, 0);
     EXPECT_LT(run.exitCode, 128) << "must not crash: " << run.output;
     EXPECT_NE(run.output.find("walk"), std::string::npos) << run.output;

@@ -1,5 +1,7 @@
 // osgvisgen as a user runs it: clear messages and a non-zero exit on bad input, the scene and its
 // walk on disk otherwise.
+#include "AppProcess.h"
+
 #include <osgVis/core/Walk.h>
 #include <osgVis/gen/SceneStats.h>
 
@@ -7,39 +9,27 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace
 {
-struct AppRun
-{
-    int exitCode = -1;
-    std::string output; // stdout and stderr together
-};
+using osgVis::test::AppRun;
 
 AppRun osgvisgen(const std::string& arguments)
 {
-    AppRun run;
-    const std::string command = std::string("'") + OSGVISGEN_BINARY + "' " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe)
-        return run;
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, pipe))
-        run.output += buffer;
-    const int status = pclose(pipe);
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    return run;
+    return osgVis::test::runApp(OSGVISGEN_BINARY, arguments);
 }
 
+// Emptied at the first call of each test, kept for the rest of it.
 std::filesystem::path scratchDir()
 {
-    const auto dir = std::filesystem::temp_directory_path() / ("osgvisgen-test-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
+    static std::string lastTest;
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const std::filesystem::path dir = std::filesystem::path(OSGVIS_BINARY_DIR) / "tests" / "gen" / test;
+    if (test != lastTest)
+        osgVis::test::scratchDirectory("gen", test);
+    lastTest = test;
     return dir;
 }
 

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-namespace osgVis::bench::test
+namespace osgVis::test
 {
 // The text of the object `"modes": { "<mode>": { ... } }`, or empty when the mode is missing.
 std::string modeObject(const std::string& json, const std::string& mode);
@@ -12,4 +12,4 @@ std::string modeObject(const std::string& json, const std::string& mode);
 bool hasKey(const std::string& json, const std::string& key);
 // The number after `"key":`; nullopt for null or a missing key.
 std::optional<double> numberField(const std::string& json, const std::string& key);
-} // namespace osgVis::bench::test
+} // namespace osgVis::test

@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-namespace osgVis::bench::test
+namespace osgVis::test
 {
 std::string modeObject(const std::string& json, const std::string& mode)
 {
@@ -34,4 +34,4 @@ std::optional<double> numberField(const std::string& json, const std::string& ke
         return std::nullopt; // null
     return value;
 }
-} // namespace osgVis::bench::test
+} // namespace osgVis::test
