@@ -1,5 +1,6 @@
 // osgvisviewer refuses bad input with a message that names the problem and a non-zero exit code,
 // before it opens any window (so these tests need no display).
+#include "BadModelFiles.h"
 #include "ViewerProcess.h"
 
 #include <osgVis/core/ModuleRegistry.h>
@@ -62,4 +63,17 @@ TEST(ViewerErrors, UnwritableOutputFolderFails)
     const auto run = runViewer("--generate office --triangles 2000 --mode osg --headless \"" + blocker + "/out\"");
     EXPECT_NE(run.exitCode, 0);
     EXPECT_NE(run.output.find(blocker), std::string::npos) << run.output;
+}
+
+TEST(ViewerErrors, UnusableModelsAreRefused)
+{
+    const std::string dir = scratchDirectory("unusable-models");
+    const auto empty = runViewer("\"" + osgVis::test::writeEmptyModel(dir).string() + "\" --headless \"" + dir + "/out\"");
+    EXPECT_EQ(empty.exitCode, 1) << empty.output;
+    EXPECT_NE(empty.output.find("has no drawables"), std::string::npos) << empty.output;
+
+    const auto garbage =
+        runViewer("\"" + osgVis::test::writeGarbageModel(dir).string() + "\" --headless \"" + dir + "/out\"");
+    EXPECT_EQ(garbage.exitCode, 1) << garbage.output;
+    EXPECT_NE(garbage.output.find("cannot read scene"), std::string::npos) << garbage.output;
 }

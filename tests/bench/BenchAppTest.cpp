@@ -4,6 +4,7 @@
 // culling is frustum culling (it never beats the frustum module's efficacy, and both skip some of
 // the scene), and bad input ends with a message and a non-zero status, never a crash.
 #include "AppProcess.h"
+#include "BadModelFiles.h"
 #include "BenchJson.h"
 
 #include <gtest/gtest.h>
@@ -118,4 +119,30 @@ TEST(BenchApp, BadCommandLineExitsTwo)
 {
     EXPECT_EQ(runBench("--generate city --views many").exitCode, 2);
     EXPECT_EQ(runBench("--modes osg").exitCode, 2) << "neither --scene nor --generate";
+}
+
+TEST(BenchApp, UnusableModelsFailWithMessage)
+{
+    const auto dir = scratchDirectory("bench", "unusable-models");
+    const AppRun empty = runBench("--scene '" + writeEmptyModel(dir).string() + "' --modes osg");
+    EXPECT_EQ(empty.exitCode, 1) << empty.output;
+    EXPECT_NE(empty.output.find("has no drawables"), std::string::npos) << empty.output;
+
+    const AppRun garbage = runBench("--scene '" + writeGarbageModel(dir).string() + "' --modes osg");
+    EXPECT_EQ(garbage.exitCode, 1) << garbage.output;
+    EXPECT_NE(garbage.output.find("cannot read scene"), std::string::npos) << garbage.output;
+}
+
+TEST(BenchApp, NanGeometryIsKeptAndNeverCrashes)
+{
+    const auto dir = scratchDirectory("bench", "nan-model");
+    const std::filesystem::path json = dir / "nan.json";
+    const AppRun run = runBench("--scene '" + writeNanModel(dir).string() +
+                                "' --modes osg,frustum --views 4 --size 160x128 --json '" + json.string() + "'");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const std::string text = readText(json);
+    EXPECT_EQ(numberField(text, "objects"), 1.0) << text;
+    // Its bounds are not finite, so frustum may not cull it in any view.
+    EXPECT_EQ(numberField(modeObject(text, "frustum"), "drawn_fraction"), 1.0) << text;
+    EXPECT_EQ(numberField(modeObject(text, "frustum"), "false_invisible"), 0.0) << text;
 }

@@ -1,0 +1,110 @@
+// The one contract, checked for every mode the registry knows: over the generated scenes (every
+// view of their walks) and the adversarial set, a conservative mode leaves 0 visible objects
+// undrawn. The judge is the oracle inside osgvisbench, which renders the real graph; modes run
+// through the same OSG adapter an application uses. A mode registered later is picked up here
+// without touching this file.
+#include "AppProcess.h"
+#include "BenchJson.h"
+
+#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/gen/Generator.h>
+
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+using namespace osgVis::test;
+
+namespace
+{
+struct ContractScene
+{
+    std::string name;      // test name part
+    std::string generate;  // osgvisgen arguments less -o
+    std::string benchArgs; // view sampling and size
+};
+
+// Modes the bench runs: OSG's own culling, every non-approximate module alone, and each after
+// frustum (the chain an application would use).
+std::vector<std::string> conservativeModes()
+{
+    std::vector<std::string> modes{"osg"};
+    for (const std::string& name : osgVis::core::moduleNames())
+    {
+        if (osgVis::core::createModule(name)->approximate())
+            continue;
+        modes.push_back(name);
+        if (name != "frustum")
+            modes.push_back("frustum+" + name);
+    }
+    return modes;
+}
+
+std::string joined(const std::vector<std::string>& items)
+{
+    std::string text;
+    for (const std::string& item : items)
+        text += (text.empty() ? "" : ",") + item;
+    return text;
+}
+
+std::vector<ContractScene> contractScenes()
+{
+    std::vector<ContractScene> scenes;
+    for (const std::string& kind : osgVis::gen::sceneKindNames())
+    {
+        // Every view of the walk at a small size, then a sample of it at the walk's own size.
+        scenes.push_back({kind + "_every_view", "--kind " + kind + " --triangles 6000 --seed 1", "--size 320x256"});
+        scenes.push_back({kind + "_full_size", "--kind " + kind + " --triangles 12000 --seed 2", "--views 24"});
+    }
+    for (std::string name : osgVis::gen::adversarialSceneNames())
+    {
+        const std::string arguments = "--adversarial " + name;
+        for (char& c : name)
+            if (c == '-')
+                c = '_';
+        scenes.push_back({name, arguments, ""});
+    }
+    return scenes;
+}
+
+void PrintTo(const ContractScene& scene, std::ostream* out)
+{
+    *out << scene.name;
+}
+
+class ConservativeModes : public ::testing::TestWithParam<ContractScene>
+{
+};
+
+TEST_P(ConservativeModes, MissNoVisibleObject)
+{
+    ASSERT_TRUE(haveDisplay()) << "needs an X display: run the tests through scripts/test.sh";
+    const ContractScene& scene = GetParam();
+    const auto dir = scratchDirectory("modes", scene.name);
+    const std::string model = (dir / "scene.osgb").string();
+    const AppRun generated = runApp(OSGVISGEN_EXE, scene.generate + " -o \"" + model + "\"");
+    ASSERT_EQ(generated.exitCode, 0) << generated.output;
+
+    const std::vector<std::string> modes = conservativeModes();
+    ASSERT_GE(modes.size(), 2u) << "the registry lost the frustum module";
+    const std::string json = (dir / "bench.json").string();
+    const AppRun bench = runApp(OSGVIS_BENCH_EXE, "--scene \"" + model + "\" --modes " + joined(modes) + " " +
+                                                      scene.benchArgs + " --json \"" + json + "\"");
+    const std::string report = readText(json);
+    ASSERT_FALSE(report.empty()) << bench.output;
+    for (const std::string& mode : modes)
+    {
+        const std::string result = modeObject(report, mode);
+        ASSERT_FALSE(result.empty()) << mode << " missing from " << report;
+        EXPECT_EQ(numberField(result, "false_invisible"), 0.0) << mode << " on " << scene.name << ": " << result;
+        EXPECT_GE(numberField(result, "overestimation").value_or(0.0), 1.0) << mode << ": " << result;
+    }
+    EXPECT_EQ(bench.exitCode, 0) << bench.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryScene, ConservativeModes, ::testing::ValuesIn(contractScenes()),
+                         [](const ::testing::TestParamInfo<ContractScene>& info) { return info.param.name; });
+} // namespace
