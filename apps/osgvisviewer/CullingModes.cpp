@@ -33,7 +33,7 @@ void checkMode(const std::string& mode)
         for (const std::string& name : cyclingModes())
             list += (list.empty() ? "" : ", ") + name;
         throw core::UnknownModeError("unknown mode '" + mode + "'; modes: " + list +
-                                     " (chain modules with commas, e.g. frustum,octree)");
+                                     " (chain modules with +, e.g. frustum+octree)");
     }
 }
 

@@ -94,7 +94,7 @@ std::string usageText(const std::string& programName)
            "Walks through SCENE (any model OpenSceneGraph reads) or a generated scene, culled by mode M.\n"
            "\n"
            "  SCENE              model file; its walk is SCENE's stem + .walk when that file exists\n"
-           "  --mode M           osg (OSG's own culling) or a module chain, e.g. frustum or frustum,octree\n"
+           "  --mode M           osg (OSG's own culling) or a module chain, e.g. frustum or frustum+octree\n"
            "                     (default frustum); an unknown mode lists the known ones\n"
            "  --walk FILE        walk path (docs/walk-format.md); default: the walk beside SCENE, the\n"
            "                     generator's walk with --generate, else an orbit around the scene\n"

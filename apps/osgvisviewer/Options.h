@@ -18,7 +18,7 @@ struct ViewerOptions
     std::string generateKind;  // "office", "city", "tetra" or empty
     std::uint64_t triangles = 200000; // size knob of --generate
     std::uint32_t seed = 1;           // seed of --generate
-    std::string mode = "frustum";     // "osg" or a module chain such as "frustum,octree"
+    std::string mode = "frustum";     // "osg" or a module chain such as "frustum+octree"
     std::string walkPath;             // empty: SCENE's stem + ".walk", else an automatic walk
     std::string recordPath;           // where `r` saves the recorded eye path
     std::string headlessDir;          // non-empty: render the walk offscreen into this folder

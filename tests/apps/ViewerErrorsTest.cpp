@@ -68,7 +68,8 @@ TEST(ViewerErrors, UnwritableOutputFolderFails)
 TEST(ViewerErrors, UnusableModelsAreRefused)
 {
     const std::string dir = scratchDirectory("unusable-models");
-    const auto empty = runViewer("\"" + osgVis::test::writeEmptyModel(dir).string() + "\" --headless \"" + dir + "/out\"");
+    const auto empty =
+        runViewer("\"" + osgVis::test::writeEmptyModel(dir).string() + "\" --headless \"" + dir + "/out\"");
     EXPECT_EQ(empty.exitCode, 1) << empty.output;
     EXPECT_NE(empty.output.find("has no drawables"), std::string::npos) << empty.output;
 

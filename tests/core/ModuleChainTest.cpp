@@ -103,7 +103,8 @@ TEST(ModuleRegistry, ChainNamesAreTrimmedAndMustNotBeEmpty)
 {
     EXPECT_EQ(createChain(" frustum ,\tfrustum").name(), "frustum,frustum");
     EXPECT_EQ(createChain("frustum").size(), 1u);
-    for (const std::string bad : {"", "frustum,,frustum", "frustum,", " , "})
+    EXPECT_EQ(createChain("frustum + frustum,frustum").name(), "frustum,frustum,frustum");
+    for (const std::string bad : {"", "frustum,,frustum", "frustum,", " , ", "frustum+", "+frustum"})
     {
         try
         {

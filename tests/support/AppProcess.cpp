@@ -12,8 +12,8 @@ namespace osgVis::test
 AppRun runApp(const std::string& executable, const std::string& arguments)
 {
     // note: output goes through a file, not a pipe, so a chatty child can never block on a full pipe
-    const std::filesystem::path log = std::filesystem::path(OSGVIS_BINARY_DIR) / "tests" /
-                                      ("app-run-" + std::to_string(::getpid()) + ".log");
+    const std::filesystem::path log =
+        std::filesystem::path(OSGVIS_BINARY_DIR) / "tests" / ("app-run-" + std::to_string(::getpid()) + ".log");
     std::filesystem::create_directories(log.parent_path());
     const std::string command = "\"" + executable + "\" " + arguments + " > \"" + log.string() + "\" 2>&1";
     const int status = std::system(command.c_str());

@@ -93,7 +93,7 @@ ModuleChain createChain(const std::string& names)
     std::size_t start = 0;
     while (true)
     {
-        const std::size_t comma = names.find(',', start);
+        const std::size_t comma = names.find_first_of(",+", start);
         const std::string name =
             trimmed(names.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
         if (name.empty())

@@ -24,6 +24,7 @@ bool hasModule(const std::string& name);
 void registerModule(const std::string& name, ModuleFactory factory);
 // Throws UnknownModeError naming the known modules.
 std::unique_ptr<VisibilityModule> createModule(const std::string& name);
-// Comma-separated list of module names → chain, e.g. "frustum,octree". Throws UnknownModeError.
+// Module names joined by '+' or ',' → chain, e.g. "frustum+octree" (the apps' spelling, since their
+// --modes lists are comma-separated) or "frustum,octree". Throws UnknownModeError.
 ModuleChain createChain(const std::string& names);
 } // namespace osgVis::core
