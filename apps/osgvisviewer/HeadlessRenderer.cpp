@@ -6,6 +6,8 @@
 #include "FrameCapture.h"
 #include "RunReport.h"
 
+#include <osgVis/oracle/OffscreenContext.h>
+
 #include <osgDB/WriteFile>
 #include <osgViewer/Viewer>
 
@@ -15,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 
 namespace osgVis::viewer
 {
@@ -45,25 +48,6 @@ bool prepareOutputDirectory(const std::string& directory)
     return writable;
 }
 
-osg::ref_ptr<osg::GraphicsContext> createPbuffer(unsigned width, unsigned height)
-{
-    osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
-    traits->readDISPLAY();
-    traits->setUndefinedScreenDetailsToDefaultScreen();
-    traits->x = 0;
-    traits->y = 0;
-    traits->width = int(width);
-    traits->height = int(height);
-    traits->red = traits->green = traits->blue = 8;
-    traits->alpha = 0; // note: an alpha channel makes Xvfb reject the pbuffer swap (BadMatch)
-    traits->depth = 24;
-    traits->windowDecoration = false;
-    traits->pbuffer = true;
-    traits->doubleBuffer = true;
-    traits->sharedContext = nullptr;
-    return osg::GraphicsContext::createGraphicsContext(traits.get());
-}
-
 // Draws one frame and returns the pixels the camera's final draw callback read back.
 osg::ref_ptr<osg::Image> drawFrame(osgViewer::Viewer& viewer, FrameCapture& capture, double time)
 {
@@ -76,8 +60,7 @@ bool writePng(const osg::Image* image, const std::string& path)
 {
     if (image && osgDB::writeImageFile(*image, path))
         return true;
-    std::cerr << "osgvisviewer: cannot write '" << path << "'" << (image ? "" : " (no pixels were read back)")
-              << "\n";
+    std::cerr << "osgvisviewer: cannot write '" << path << "'" << (image ? "" : " (no pixels were read back)") << "\n";
     return false;
 }
 } // namespace
@@ -99,11 +82,15 @@ int renderHeadless(const ViewerScene& scene, const ViewerOptions& options)
 
     const core::Walk& walk = scene.walk;
     const unsigned width = walk.width, height = walk.height;
-    osg::ref_ptr<osg::GraphicsContext> context = createPbuffer(width, height);
-    if (!context || !context->valid())
+    osg::ref_ptr<osg::GraphicsContext> context;
+    try
+    {
+        context = oracle::createOffscreenContext(width, height, true);
+    }
+    catch (const std::runtime_error& error)
     {
         std::cerr << "osgvisviewer: cannot create a " << width << "x" << height
-                  << " offscreen OpenGL buffer (pbuffer) on DISPLAY=" << display << "\n";
+                  << " offscreen OpenGL buffer (pbuffer) on DISPLAY=" << display << ": " << error.what() << "\n";
         return 1;
     }
 
@@ -171,8 +158,7 @@ int renderHeadless(const ViewerScene& scene, const ViewerOptions& options)
                 return 1;
         }
         if (views >= 20 && ((i + 1) % progressStep == 0 || i + 1 == views))
-            std::cerr << "osgvisviewer: " << (i + 1) << "/" << views << " views (" << (100 * (i + 1) / views)
-                      << "%)\n";
+            std::cerr << "osgvisviewer: " << (i + 1) << "/" << views << " views (" << (100 * (i + 1) / views) << "%)\n";
     }
     report.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

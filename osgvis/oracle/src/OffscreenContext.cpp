@@ -6,7 +6,7 @@
 
 namespace osgVis::oracle
 {
-osg::ref_ptr<osg::GraphicsContext> createOffscreenContext(unsigned width, unsigned height)
+osg::ref_ptr<osg::GraphicsContext> createOffscreenContext(unsigned width, unsigned height, bool doubleBuffered)
 {
     osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
     traits->readDISPLAY();
@@ -21,7 +21,7 @@ osg::ref_ptr<osg::GraphicsContext> createOffscreenContext(unsigned width, unsign
     traits->samples = 0;
     traits->sampleBuffers = 0;
     traits->pbuffer = true;
-    traits->doubleBuffer = false;
+    traits->doubleBuffer = doubleBuffered;
     traits->windowDecoration = false;
     traits->sharedContext = nullptr;
 
