@@ -29,6 +29,14 @@ enum ObjectFlags : std::uint32_t
     OBJECT_TRANSPARENT = 1u << 2,
     // Bounds unknown or not finite (NaN/inf geometry): no module may cull it; ModuleChain keeps it.
     OBJECT_ALWAYS_VISIBLE = 1u << 3,
+    // Drawn, but its triangles may not stand in as automatic occluders: alpha test or discard,
+    // lines/points polygon mode, no depth write, or placed under a node that may not draw it
+    // every frame (LOD, Switch, Sequence, ...).
+    OBJECT_NO_AUTO_OCCLUDER = 1u << 4,
+    // Face culling in its drawn state: back faces (counter-clockwise triangles are front faces,
+    // triangles are stored so) or front faces are not drawn, so they hide nothing from that side.
+    OBJECT_CULL_BACK = 1u << 5,
+    OBJECT_CULL_FRONT = 1u << 6,
 };
 
 struct SceneObject

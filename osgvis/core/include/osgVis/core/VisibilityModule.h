@@ -1,6 +1,7 @@
 #pragma once
 // The visibility API between a renderer and a visibility algorithm: a scene description the module
 // keeps between frames, a view in, a visible set out, notification when the scene changes.
+#include <osgVis/core/DebugRecord.h>
 #include <osgVis/core/View.h>
 #include <osgVis/core/VisibleSet.h>
 
@@ -38,6 +39,10 @@ public:
     // of a chain kept) and leaves holding a subset of them.
     // Guarantee (non-approximate modules): never culls a visible object; may keep hidden ones.
     virtual void cull(const View& view, VisibleSet& visible) = 0;
+
+    // Debug views: when `record` is set, later queries describe their decisions into it (nullptr
+    // stops). Modules without a spatial structure leave it untouched.
+    virtual void setDebugRecord(DebugRecord* record) { (void)record; }
 
 protected:
     const Scene* _scene = nullptr;

@@ -1,0 +1,56 @@
+#pragma once
+// Object-space occlusion culling after Coorg & Teller, "A Spatially and Temporally Coherent Object
+// Space Visibility Algorithm": a few large occluders near the eye (area-angle selection from the
+// eye's cell) cull whole kd-tree nodes by supporting/separating planes; connected occluders fuse;
+// each node keeps the planes that decided it last frame and re-checks only those; frustum
+// culling is folded into the same traversal; subtrees are traversed in parallel (TBB work
+// stealing) with the same answer at every thread count.
+// Modes: "octree" (fused occluders) and "octree-single" (each occluder tested on its own, the
+// paper's comparison).
+#include <osgVis/core/BoxOcclusion.h>
+#include <osgVis/core/KdTree.h>
+#include <osgVis/core/OccluderBuilder.h>
+#include <osgVis/core/OccluderSelector.h>
+#include <osgVis/core/VisibilityModule.h>
+
+#include <memory>
+
+namespace osgVis::core
+{
+struct OctreeOptions
+{
+    std::uint32_t occluders = 16;        // k: actual occluders per frame
+    double areaAngleThreshold = 0.01;    // potential-occluder threshold
+    bool fuseConnected = true;           // false: "octree-single"
+    bool temporalCoherence = true;
+    std::uint32_t maxLeafObjects = 4;
+    std::uint32_t parallelMinObjects = 256; // subtrees smaller than this run on the calling thread
+    OccluderBuildOptions occluderBuild;
+};
+
+class OctreeModule : public VisibilityModule
+{
+public:
+    explicit OctreeModule(const OctreeOptions& options = {});
+    ~OctreeModule() override;
+    const char* name() const override;
+    void setScene(const Scene& scene) override;
+    void sceneChanged(const SceneChange& change) override;
+    void cull(const View& view, VisibleSet& visible) override;
+    void setDebugRecord(DebugRecord* record) override;
+
+    const OctreeOptions& options() const { return _options; }
+    // Figures of the last query, for benchmarks and tests.
+    struct Statistics
+    {
+        std::uint32_t nodesVisited = 0, nodesInvisible = 0, nodesOutsideFrustum = 0;
+        std::uint32_t planeTests = 0, cachedDecisions = 0, activeOccluders = 0;
+    };
+    Statistics lastStatistics() const;
+
+private:
+    struct Impl;
+    OctreeOptions _options;
+    std::unique_ptr<Impl> _impl;
+};
+} // namespace osgVis::core
