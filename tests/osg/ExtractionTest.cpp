@@ -11,8 +11,15 @@
 #include <osgVis/core/ModuleRegistry.h>
 
 #include <osg/BlendFunc>
+#include <osg/CullFace>
+#include <osg/Depth>
+#include <osg/FrontFace>
 #include <osg/Geode>
+#include <osg/LOD>
 #include <osg/MatrixTransform>
+#include <osg/PolygonMode>
+#include <osg/Program>
+#include <osg/Switch>
 
 #include <gtest/gtest.h>
 
@@ -72,8 +79,7 @@ TEST(Extraction, TrianglesCanBeLeftOut)
 
 TEST(Extraction, TransformsMoveBounds)
 {
-    osg::ref_ptr<osg::MatrixTransform> outer =
-        new osg::MatrixTransform(osg::Matrix::translate(10, 0, 0));
+    osg::ref_ptr<osg::MatrixTransform> outer = new osg::MatrixTransform(osg::Matrix::translate(10, 0, 0));
     osg::ref_ptr<osg::MatrixTransform> inner = new osg::MatrixTransform(osg::Matrix::scale(2, 3, 4));
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     geode->addDrawable(makeBox(osg::Vec3(0, 0, 0), osg::Vec3(1, 1, 1)));
@@ -276,8 +282,7 @@ TEST(Extraction, MarkerNodesCopyTheirData)
     osg::ref_ptr<osgVis::Portal> portal = new osgVis::Portal;
     portal->setPolygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
     portal->setCells("A", "B");
-    osg::ref_ptr<osgVis::Portal> copy =
-        static_cast<osgVis::Portal*>(portal->clone(osg::CopyOp::DEEP_COPY_ALL));
+    osg::ref_ptr<osgVis::Portal> copy = static_cast<osgVis::Portal*>(portal->clone(osg::CopyOp::DEEP_COPY_ALL));
     EXPECT_EQ(copy->getPolygon().size(), 3u);
     EXPECT_EQ(copy->getCellB(), "B");
     EXPECT_STREQ(copy->libraryName(), "osgVis");
@@ -301,4 +306,110 @@ TEST(Modes, UnknownModeThrowsNamingTheKnownModes)
     EXPECT_THROW(group->setModes("bogus"), osgVis::core::UnknownModeError);
     EXPECT_EQ(group->getModes(), "frustum");
     EXPECT_THROW(osg::ref_ptr<osgVis::CullVisitor>(new osgVis::CullVisitor("bogus")), osgVis::core::UnknownModeError);
+}
+
+namespace
+{
+// Extracts `root` and returns the flags of its objects in depth-first order.
+std::vector<std::uint32_t> objectFlags(osg::Node& root)
+{
+    std::vector<std::uint32_t> flags;
+    for (const auto& object : osgVis::extractScene(root)->scene.objects)
+        flags.push_back(object.flags);
+    return flags;
+}
+
+osg::ref_ptr<osg::Geode> boxGeode()
+{
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(makeBox(osg::Vec3(0, 0, 0), osg::Vec3(1, 1, 1)));
+    return geode;
+}
+} // namespace
+
+TEST(Extraction, OnlySolidGeometryDrawnEveryFrameMayOcclude)
+{
+    using osgVis::core::OBJECT_NO_AUTO_OCCLUDER;
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(boxGeode()); // 0: plain
+    osg::ref_ptr<osg::Geode> alpha = boxGeode();
+    alpha->getOrCreateStateSet()->setMode(GL_ALPHA_TEST, osg::StateAttribute::ON);
+    root->addChild(alpha); // 1
+    osg::ref_ptr<osg::Geode> lines = boxGeode();
+    lines->getOrCreateStateSet()->setAttribute(
+        new osg::PolygonMode(osg::PolygonMode::FRONT_AND_BACK, osg::PolygonMode::LINE));
+    root->addChild(lines); // 2
+    osg::ref_ptr<osg::Geode> noDepthWrite = boxGeode();
+    noDepthWrite->getOrCreateStateSet()->setAttribute(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, false));
+    root->addChild(noDepthWrite); // 3
+    osg::ref_ptr<osg::Geode> shaded = boxGeode();
+    shaded->getOrCreateStateSet()->setAttribute(new osg::Program);
+    root->addChild(shaded); // 4
+    osg::ref_ptr<osg::LOD> lod = new osg::LOD;
+    lod->addChild(boxGeode(), 0.f, 100.f);
+    root->addChild(lod); // 5
+    osg::ref_ptr<osg::Switch> toggled = new osg::Switch;
+    toggled->addChild(boxGeode());
+    root->addChild(toggled); // 6
+    osg::ref_ptr<osg::MatrixTransform> moved = new osg::MatrixTransform(osg::Matrix::translate(5, 0, 0));
+    moved->addChild(boxGeode());
+    root->addChild(moved); // 7: plain under a transform
+    // 8: the parent turns the alpha test on with OVERRIDE; the child's OFF does not win…
+    osg::ref_ptr<osg::Group> overriding = new osg::Group;
+    overriding->getOrCreateStateSet()->setMode(GL_ALPHA_TEST, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    osg::ref_ptr<osg::Geode> child = boxGeode();
+    child->getOrCreateStateSet()->setMode(GL_ALPHA_TEST, osg::StateAttribute::OFF);
+    overriding->addChild(child);
+    root->addChild(overriding);
+    // 9: …unless it is PROTECTED.
+    osg::ref_ptr<osg::Group> overridden = new osg::Group;
+    overridden->getOrCreateStateSet()->setMode(GL_ALPHA_TEST, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    osg::ref_ptr<osg::Geode> protectedChild = boxGeode();
+    protectedChild->getOrCreateStateSet()->setMode(GL_ALPHA_TEST,
+                                                   osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    overridden->addChild(protectedChild);
+    root->addChild(overridden);
+
+    const std::vector<std::uint32_t> flags = objectFlags(*root);
+    ASSERT_EQ(flags.size(), 10u);
+    const bool expectedBlocked[] = {false, true, true, true, true, true, true, false, true, false};
+    for (std::size_t i = 0; i < flags.size(); ++i)
+        EXPECT_EQ((flags[i] & OBJECT_NO_AUTO_OCCLUDER) != 0, expectedBlocked[i]) << "object " << i;
+}
+
+TEST(Extraction, FaceCullingMakesOneSidedOccludersStoredFrontCounterClockwise)
+{
+    using namespace osgVis::core;
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    osg::ref_ptr<osg::Geode> back = boxGeode();
+    back->getOrCreateStateSet()->setMode(GL_CULL_FACE, osg::StateAttribute::ON);
+    root->addChild(back); // 0: default CullFace mode is BACK
+    osg::ref_ptr<osg::Geode> front = boxGeode();
+    front->getOrCreateStateSet()->setAttributeAndModes(new osg::CullFace(osg::CullFace::FRONT));
+    root->addChild(front); // 1
+    osg::ref_ptr<osg::Geode> both = boxGeode();
+    both->getOrCreateStateSet()->setAttributeAndModes(new osg::CullFace(osg::CullFace::FRONT_AND_BACK));
+    root->addChild(both); // 2
+    osg::ref_ptr<osg::Geode> clockwise = boxGeode();
+    clockwise->getOrCreateStateSet()->setAttribute(new osg::FrontFace(osg::FrontFace::CLOCKWISE));
+    root->addChild(clockwise);  // 3
+    root->addChild(boxGeode()); // 4: reference winding
+
+    const auto extracted = osgVis::extractScene(*root);
+    const Scene& scene = extracted->scene;
+    ASSERT_EQ(scene.objects.size(), 5u);
+    const std::uint32_t sides = OBJECT_CULL_BACK | OBJECT_CULL_FRONT;
+    EXPECT_EQ(scene.objects[0].flags & sides, std::uint32_t(OBJECT_CULL_BACK));
+    EXPECT_EQ(scene.objects[1].flags & sides, std::uint32_t(OBJECT_CULL_FRONT));
+    EXPECT_EQ(scene.objects[2].flags & sides, sides);
+    EXPECT_EQ(scene.objects[3].flags & sides, 0u);
+    // Clockwise-front triangles are stored flipped: each normal opposes the reference one.
+    const auto normal = [](const Triangle& t) { return glm::cross(t.b - t.a, t.c - t.a); };
+    ASSERT_EQ(scene.objects[3].triangleCount, scene.objects[4].triangleCount);
+    for (std::uint32_t i = 0; i < scene.objects[4].triangleCount; ++i)
+    {
+        const Vec3f flipped = normal(scene.triangles[scene.objects[3].firstTriangle + i]);
+        const Vec3f reference = normal(scene.triangles[scene.objects[4].firstTriangle + i]);
+        EXPECT_LT(glm::dot(flipped, reference), 0.f) << "triangle " << i;
+    }
 }

@@ -6,6 +6,7 @@
 #include <osgVis/VisibilityGroup>
 
 #include "CullingContext.h"
+#include "OccluderEligibility.h"
 
 #include <osg/AutoTransform>
 #include <osg/Billboard>
@@ -104,15 +105,30 @@ struct VertexBoundsVisitor : public osg::ConstArrayVisitor
 {
     explicit VertexBoundsVisitor(BoundsAccumulator& out) : _out(out) {}
 
-    void apply(const osg::Vec2Array& a) override { each(a, [&](const osg::Vec2& v) { _out.add({v.x(), v.y(), 0.0}); }); }
-    void apply(const osg::Vec3Array& a) override { each(a, [&](const osg::Vec3& v) { _out.add(v); }); }
-    void apply(const osg::Vec4Array& a) override { each(a, [&](const osg::Vec4& v) { _out.addHomogeneous(v); }); }
+    void apply(const osg::Vec2Array& a) override
+    {
+        each(a, [&](const osg::Vec2& v) { _out.add({v.x(), v.y(), 0.0}); });
+    }
+    void apply(const osg::Vec3Array& a) override
+    {
+        each(a, [&](const osg::Vec3& v) { _out.add(v); });
+    }
+    void apply(const osg::Vec4Array& a) override
+    {
+        each(a, [&](const osg::Vec4& v) { _out.addHomogeneous(v); });
+    }
     void apply(const osg::Vec2dArray& a) override
     {
         each(a, [&](const osg::Vec2d& v) { _out.add({v.x(), v.y(), 0.0}); });
     }
-    void apply(const osg::Vec3dArray& a) override { each(a, [&](const osg::Vec3d& v) { _out.add(v); }); }
-    void apply(const osg::Vec4dArray& a) override { each(a, [&](const osg::Vec4d& v) { _out.addHomogeneous(v); }); }
+    void apply(const osg::Vec3dArray& a) override
+    {
+        each(a, [&](const osg::Vec3d& v) { _out.add(v); });
+    }
+    void apply(const osg::Vec4dArray& a) override
+    {
+        each(a, [&](const osg::Vec4d& v) { _out.addHomogeneous(v); });
+    }
 
     bool handled = false;
 
@@ -229,8 +245,8 @@ private:
             _portals.push_back({portal, localToRoot()});
 
         osg::Group* group = node.asGroup();
-        if (&node == _root && group && (typeid(node) == typeid(osg::Group) || isOsgVisGroup(node) ||
-                                        plainNodeType(node)))
+        if (&node == _root && group &&
+            (typeid(node) == typeid(osg::Group) || isOsgVisGroup(node) || plainNodeType(node)))
             traverseRootChildren(*group);
         else
         {
@@ -283,6 +299,9 @@ private:
                 flags |= core::OBJECT_DYNAMIC;
         }
 
+        const OccluderEligibility eligibility = occluderEligibility(_nodePath);
+        flags |= eligibility.flags;
+
         BoundsAccumulator bounds(ref.world);
         const osg::Geometry* geometry = drawable.asGeometry();
         bool fromVertices = false;
@@ -307,9 +326,13 @@ private:
         static_cast<TriangleCollector&>(functor) = triangles;
         drawable.accept(functor);
         const TriangleCollector& counted = functor;
+        // note: stored triangles are counter-clockwise seen from their drawn front, whatever
+        // osg::FrontFace says (face culling and one-sided occluders rely on it)
+        if (eligibility.clockwiseFront && _options.keepTriangles)
+            for (std::size_t t = firstTriangle; t < _out.scene.triangles.size(); ++t)
+                std::swap(_out.scene.triangles[t].b, _out.scene.triangles[t].c);
 
-        const core::ObjectId id =
-            _out.scene.addObject(bounds.bounds, counted.count, flags, drawable.getName());
+        const core::ObjectId id = _out.scene.addObject(bounds.bounds, counted.count, flags, drawable.getName());
         core::SceneObject& object = _out.scene.objects[id];
         object.firstTriangle = firstTriangle;
         if (_options.keepTriangles)
@@ -357,8 +380,8 @@ private:
             const auto b = _cellIndex.find(portal->getCellB());
             if (a == _cellIndex.end() || b == _cellIndex.end())
             {
-                OSG_WARN << "osgVis: portal '" << portal->getName() << "' joins unknown cells '"
-                         << portal->getCellA() << "' and '" << portal->getCellB() << "'; ignored" << std::endl;
+                OSG_WARN << "osgVis: portal '" << portal->getName() << "' joins unknown cells '" << portal->getCellA()
+                         << "' and '" << portal->getCellB() << "'; ignored" << std::endl;
                 continue;
             }
             _out.scene.portals.push_back({toWorldPolygon(portal->getPolygon(), world), a->second, b->second});

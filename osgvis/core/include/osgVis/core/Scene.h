@@ -13,6 +13,7 @@ namespace osgVis::core
 using ObjectId = std::uint32_t;
 constexpr ObjectId InvalidObject = ~ObjectId(0);
 
+// World space, counter-clockwise seen from the side the renderer treats as front.
 struct Triangle
 {
     Vec3f a, b, c;

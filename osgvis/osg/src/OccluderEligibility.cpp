@@ -1,0 +1,155 @@
+#include "OccluderEligibility.h"
+
+#include "CullingContext.h"
+
+#include <osgVis/Cell>
+#include <osgVis/Occluder>
+#include <osgVis/Portal>
+
+#include <osg/CullFace>
+#include <osg/Depth>
+#include <osg/Drawable>
+#include <osg/FrontFace>
+#include <osg/Geode>
+#include <osg/MatrixTransform>
+#include <osg/PolygonMode>
+#include <osg/PositionAttitudeTransform>
+#include <osg/Program>
+
+#include <osgVis/core/Scene.h>
+
+#include <typeinfo>
+
+namespace osgVis
+{
+namespace
+{
+// The value a mode or attribute takes below a chain of state sets, following OSG's rules: a
+// lower setting wins unless the inherited one is OVERRIDE and the lower one is not PROTECTED.
+template <class Value> struct Inherited
+{
+    Value value{};
+    bool set = false;
+    osg::StateAttribute::OverrideValue how = osg::StateAttribute::OFF;
+
+    void apply(const Value& lower, osg::StateAttribute::OverrideValue lowerHow)
+    {
+        const bool locked =
+            set && (how & osg::StateAttribute::OVERRIDE) && !(lowerHow & osg::StateAttribute::PROTECTED);
+        if (locked)
+            return;
+        value = lower;
+        how = lowerHow;
+        set = true;
+    }
+};
+
+struct DrawnState
+{
+    Inherited<bool> cullFace, alphaTest, depthTest, stencilTest, clipPlane;
+    Inherited<const osg::StateAttribute*> cullFaceMode, frontFace, polygonMode, depth, program;
+
+    void applyMode(Inherited<bool>& mode, const osg::StateSet& ss, GLenum gl)
+    {
+        const osg::StateAttribute::GLModeValue v = ss.getMode(gl);
+        if (v & osg::StateAttribute::INHERIT)
+            return;
+        mode.apply((v & osg::StateAttribute::ON) != 0, v);
+    }
+    void applyAttribute(Inherited<const osg::StateAttribute*>& slot, const osg::StateSet& ss,
+                        osg::StateAttribute::Type type)
+    {
+        const osg::StateSet::RefAttributePair* pair = ss.getAttributePair(type);
+        if (pair && pair->first.valid())
+            slot.apply(pair->first.get(), pair->second);
+    }
+    void apply(const osg::StateSet& ss)
+    {
+        applyMode(cullFace, ss, GL_CULL_FACE);
+        applyMode(alphaTest, ss, GL_ALPHA_TEST);
+        applyMode(depthTest, ss, GL_DEPTH_TEST);
+        applyMode(stencilTest, ss, GL_STENCIL_TEST);
+        for (GLenum plane = GL_CLIP_PLANE0; plane <= GL_CLIP_PLANE5; ++plane)
+        {
+            const osg::StateAttribute::GLModeValue v = ss.getMode(plane);
+            if (!(v & osg::StateAttribute::INHERIT) && (v & osg::StateAttribute::ON))
+                clipPlane.apply(true, v);
+        }
+        applyAttribute(cullFaceMode, ss, osg::StateAttribute::CULLFACE);
+        applyAttribute(frontFace, ss, osg::StateAttribute::FRONTFACE);
+        applyAttribute(polygonMode, ss, osg::StateAttribute::POLYGONMODE);
+        applyAttribute(depth, ss, osg::StateAttribute::DEPTH);
+        applyAttribute(program, ss, osg::StateAttribute::PROGRAM);
+    }
+};
+
+// Nodes whose cull traversal always draws their drawables where extraction put them.
+bool drawsEveryFrame(const osg::Node& node, bool isRoot)
+{
+    if (node.asDrawable())
+    {
+        const osg::Callback* cb = node.getCullCallback();
+        const auto* own = dynamic_cast<const VisibilityCullCallback*>(cb);
+        return !node.asDrawable()->getDrawCallback() && (!cb || (own && !own->getChained()));
+    }
+    if (node.getCullCallback() && !isRoot)
+        return false;
+    const std::type_info& t = typeid(node);
+    return isRoot || t == typeid(osg::Group) || t == typeid(osg::Geode) || t == typeid(osg::MatrixTransform) ||
+           t == typeid(osg::PositionAttitudeTransform) || t == typeid(Occluder) || t == typeid(Cell) ||
+           t == typeid(Portal);
+}
+
+bool fillsBothSides(const osg::StateAttribute* attribute)
+{
+    const auto* mode = static_cast<const osg::PolygonMode*>(attribute);
+    return !mode || (mode->getMode(osg::PolygonMode::FRONT) == osg::PolygonMode::FILL &&
+                     mode->getMode(osg::PolygonMode::BACK) == osg::PolygonMode::FILL);
+}
+
+bool writesDepthNormally(const osg::StateAttribute* attribute)
+{
+    const auto* depth = static_cast<const osg::Depth*>(attribute);
+    if (!depth)
+        return true;
+    const osg::Depth::Function f = depth->getFunction();
+    return depth->getWriteMask() && depth->getZNear() == 0.0 && depth->getZFar() == 1.0 &&
+           (f == osg::Depth::LESS || f == osg::Depth::LEQUAL);
+}
+} // namespace
+
+OccluderEligibility occluderEligibility(const osg::NodePath& path)
+{
+    OccluderEligibility out;
+    DrawnState state;
+    bool everyFrame = true;
+    for (std::size_t i = 0; i < path.size(); ++i)
+    {
+        everyFrame = everyFrame && drawsEveryFrame(*path[i], i == 0);
+        if (const osg::StateSet* ss = path[i]->getStateSet())
+            state.apply(*ss);
+    }
+
+    // note: a shader may discard or move fragments, an alpha test punches holes, clip planes and
+    // the stencil cut pixels away: none of them may hide anything on our word.
+    const bool solid = everyFrame && !(state.alphaTest.set && state.alphaTest.value) &&
+                       !(state.stencilTest.set && state.stencilTest.value) && !state.clipPlane.set &&
+                       !(state.depthTest.set && !state.depthTest.value) && fillsBothSides(state.polygonMode.value) &&
+                       writesDepthNormally(state.depth.value) && !state.program.value;
+    if (!solid)
+        out.flags |= core::OBJECT_NO_AUTO_OCCLUDER;
+
+    if (const auto* front = static_cast<const osg::FrontFace*>(state.frontFace.value))
+        out.clockwiseFront = front->getMode() == osg::FrontFace::CLOCKWISE;
+    if (state.cullFace.set && state.cullFace.value)
+    {
+        const auto* cull = static_cast<const osg::CullFace*>(state.cullFaceMode.value);
+        const osg::CullFace::Mode mode = cull ? cull->getMode() : osg::CullFace::BACK;
+        if (mode == osg::CullFace::BACK || mode == osg::CullFace::FRONT_AND_BACK)
+            out.flags |= core::OBJECT_CULL_BACK;
+        if (mode == osg::CullFace::FRONT || mode == osg::CullFace::FRONT_AND_BACK)
+            out.flags |= core::OBJECT_CULL_FRONT;
+    }
+    return out;
+}
+} // namespace osgVis
