@@ -34,11 +34,18 @@ struct BoxOccluderPlanes
     // Per edge i of the polygon. A supporting plane is oriented so that the polygon and the box
     // are on its positive side; a separating plane so that the polygon is on its positive side
     // and the box on its negative side. `hasSeparating[i]` is false when no plane through edge i
-    // separates them (the box reaches across the edge's line).
+    // separates them (the box reaches across the edge's line). All normals are unit.
+    // An edge between repeated vertices is skipped: its supporting plane has a zero normal and
+    // d = +max (satisfied by every finite eye) and it has no separating plane. When the box
+    // crosses the polygon's plane, of the two separating planes an edge may have the one better
+    // for eyes in front (through the part of the box behind the plane) is kept if it exists.
     std::vector<Plane> supporting, separating;
     std::vector<std::uint8_t> hasSeparating;
     // The box lies strictly on one side of the polygon's plane: +1 front (normal side), -1 back,
-    // 0 it touches or straddles the plane (then no supporting planes are kept: never Invisible).
+    // 0 it touches or straddles the plane (then `supporting` is empty: never Invisible).
+    // A polygon that cannot be trusted (fewer than 3 vertices, not finite, not planar in its
+    // stated plane, clockwise, not convex, a sliver, nearly coincident vertices) and an empty or
+    // non-finite box give boxSide 0 and all three vectors empty.
     int boxSide = 0;
 };
 
@@ -53,9 +60,10 @@ void computePlanes(const OccluderPolygon& polygon, const Aabb& box, BoxOccluderP
 
 // Classifies from `eye` with planes computed by computePlanes. `margin` (world units) is the
 // distance the eye must keep from every deciding plane; closer counts as on the plane, which
-// never gives Invisible. A one-sided polygon seen from its culled side hides nothing: Visible.
-Occlusion classify(const OccluderPolygon& polygon, const BoxOccluderPlanes& planes, const Vec3& eye,
-                   double margin);
+// never gives Invisible (an eye within `margin` of the polygon's plane gives Visible). It must
+// exceed rounding, e.g. 1e-9 of the scene's size. A one-sided polygon seen from its culled side
+// hides nothing: Visible. Allocation-free.
+Occlusion classify(const OccluderPolygon& polygon, const BoxOccluderPlanes& planes, const Vec3& eye, double margin);
 
 // Convenience: computePlanes then classify.
 Occlusion classifyBox(const OccluderPolygon& polygon, const Aabb& box, const Vec3& eye, double margin);
