@@ -37,6 +37,22 @@ std::vector<std::string> splitList(const std::string& text, char separator)
     return items;
 }
 
+// A comma-separated list of integers in [1, limit], e.g. "--speeds 1,2,4".
+std::vector<unsigned> parsePositiveList(const std::string& flag, const std::string& text, unsigned limit)
+{
+    std::vector<unsigned> values;
+    for (const std::string& item : splitList(text, ','))
+    {
+        const std::uint64_t value = parseUnsigned(flag, item);
+        if (value < 1 || value > limit)
+            throw UsageError(flag + " values must lie between 1 and " + std::to_string(limit) + ", got '" + item + "'");
+        values.push_back(unsigned(value));
+    }
+    if (values.empty())
+        throw UsageError(flag + " is empty");
+    return values;
+}
+
 void parseSize(const std::string& text, unsigned& width, unsigned& height)
 {
     const auto x = text.find_first_of("xX");
@@ -53,12 +69,20 @@ std::string benchUsage()
 {
     return "usage: osgvisbench (--scene FILE | --generate office|city|tetra [--triangles N] [--seed S])\n"
            "                   [--walk FILE] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
-           "                   [--views N] [--size WxH] [--supersample K] [--json OUT.json] [--help]\n"
+           "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
+           "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--cull-only] [--json OUT.json] [--help]\n"
            "\n"
            "Renders every mode over the same walk in one process and measures it against the\n"
            "exact-visibility oracle (docs/benchmark.md). A module chain is written with '+'.\n"
-           "Default modes: osg,frustum,exact. Exit status: 0 ok, 1 a conservative mode culled a\n"
-           "visible object or the run failed, 2 bad command line.\n";
+           "Default modes: osg,frustum,exact.\n"
+           "--cube: every walk key becomes six 90-degree square views (HxH, H the walk's height),\n"
+           "  the faces of a cube around the eye, so every metric covers the full sphere.\n"
+           "--speeds, --threads: also time each module-chain mode's cull alone (no rendering) with\n"
+           "  the observer S times faster (every S-th walk key) under T TBB threads, and check that\n"
+           "  every thread count gives the same visible sets. A missing list means speed 1 or\n"
+           "  TBB's default thread count. --cull-only runs just this sweep (no oracle, no GL).\n"
+           "Exit status: 0 ok, 1 a conservative mode culled a visible object, gave different\n"
+           "visible sets at different thread counts, or the run failed; 2 bad command line.\n";
 }
 
 BenchOptions parseBenchOptions(int argc, char** argv)
@@ -99,6 +123,22 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.jsonFile = value();
         else if (flag == "--supersample")
             options.supersample = unsigned(parseUnsigned(flag, value()));
+        else if (flag == "--cube")
+            options.cube = true;
+        else if (flag == "--fov")
+        {
+            // The only field of view chosen here is the full sphere; narrower ones are the walk's.
+            const std::string degrees = value();
+            if (degrees != "360")
+                throw UsageError("--fov accepts only 360 (the six cube faces, as --cube), got '" + degrees + "'");
+            options.cube = true;
+        }
+        else if (flag == "--speeds")
+            options.speeds = parsePositiveList(flag, value(), 1000);
+        else if (flag == "--threads")
+            options.threads = parsePositiveList(flag, value(), 256);
+        else if (flag == "--cull-only")
+            options.cullOnly = true;
         else
             throw UsageError("unknown argument '" + flag + "'");
     }
@@ -113,6 +153,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             throw UsageError("--modes contains an empty name");
     if (options.supersample < 1 || options.supersample > 8)
         throw UsageError("--supersample must lie between 1 and 8");
+    if (options.cullOnly && !options.sweeps())
+        throw UsageError("--cull-only needs a sweep: give --speeds and/or --threads");
     return options;
 }
 } // namespace osgVis::bench

@@ -26,8 +26,14 @@ struct BenchOptions
     unsigned width = 0, height = 0;   // --size WxH; 0: the walk's size
     std::string jsonFile;             // --json OUT.json
     unsigned supersample = 2;         // --supersample K: the oracle's extra check at K× resolution
+    bool cube = false;                // --cube (or --fov 360): six cube-face views per walk key
+    std::vector<unsigned> speeds;     // --speeds 1,2,4: cull-only sweep over observer speeds
+    std::vector<unsigned> threads;    // --threads 1,2: cull-only sweep over TBB thread counts
+    bool cullOnly = false;            // --cull-only: the sweep alone, no oracle and no rendering
     bool help = false;                // --help
     std::string commandLine;          // argv joined, recorded in the JSON
+
+    bool sweeps() const { return !speeds.empty() || !threads.empty(); }
 };
 
 // Throws UsageError naming the offending argument.

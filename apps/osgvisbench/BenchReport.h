@@ -33,17 +33,47 @@ struct ModeResult
     std::uint32_t viewsWithFalseInvisible = 0;
 };
 
+// One point of a cull-only sweep: a module chain's own query time at one observer speed and thread
+// count (docs/benchmark.md, "Sweeps").
+struct SweepPoint
+{
+    std::string mode;
+    unsigned speed = 1;
+    unsigned threads = 1;
+    std::size_t views = 0; // timed queries
+    std::optional<double> cullMsMedian;
+    std::optional<double> cullMsP99;
+    std::optional<double> visibleMean; // objects in the answer, mean over the timed queries
+};
+
+// Whether a swept mode gave the same visible set for every view at every thread count.
+struct SweepDeterminism
+{
+    std::string mode;
+    bool conservative = true;
+    bool identicalAcrossThreads = true;
+    std::size_t differingViews = 0; // (speed, thread count, view) answers unlike the first thread count's
+};
+
+struct SweepReport
+{
+    std::vector<SweepPoint> points; // mode-major, then speed, then thread count
+    std::vector<SweepDeterminism> determinism;
+};
+
 struct BenchReport
 {
     std::string scene;
     std::uint64_t triangles = 0;
     std::size_t objects = 0;
     std::size_t views = 0;
+    bool cube = false; // views are six cube faces per walk key
     unsigned width = 0, height = 0;
     std::string command;
     unsigned supersample = 1;
     std::vector<std::uint32_t> viewsWithSupersampleExtras;
     std::uint64_t supersampleExtras = 0;
-    std::vector<ModeResult> modes;
+    std::vector<ModeResult> modes; // empty with --cull-only
+    SweepReport sweeps;
 };
 } // namespace osgVis::bench

@@ -2,6 +2,8 @@
 
 #include "../osgvisviewer/SceneSource.h"
 #include "BenchViewer.h"
+#include "CullSweep.h"
+#include "DerivedWalks.h"
 #include "EmittedObjects.h"
 #include "ExactReplay.h"
 #include "Metrics.h"
@@ -36,29 +38,14 @@ bool runsMode(const std::vector<BenchMode>& modes, BenchMode::Kind kind)
             return true;
     return false;
 }
-} // namespace
 
-BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& modes)
+// The oracle, then every mode rendered over `views` in one viewer, measured into report.modes.
+void renderModes(BenchReport& report, const viewer::ViewerScene& scene, const core::Walk& walk,
+                 const std::vector<BenchView>& views, const std::vector<BenchMode>& modes, unsigned supersample)
 {
-    const viewer::ViewerScene scene = loadScene(options);
-    const core::Walk& walk = scene.walk;
-    const std::vector<BenchView> views = makeBenchViews(walk, options.views);
     const core::Scene& model = scene.objects->scene;
-    std::cerr << "scene: " << scene.name << " (" << model.objects.size() << " objects, " << model.totalTriangles()
-              << " triangles), walk: " << scene.walkSource << ", " << views.size() << " views at " << walk.width << "x"
-              << walk.height << std::endl;
-
     const OracleReference reference =
-        computeOracleReference(*scene.model, *scene.objects, views, walk.width, walk.height, options.supersample);
-
-    BenchReport report;
-    report.scene = scene.name;
-    report.triangles = model.totalTriangles();
-    report.objects = model.objects.size();
-    report.views = views.size();
-    report.width = walk.width;
-    report.height = walk.height;
-    report.command = options.commandLine;
+        computeOracleReference(*scene.model, *scene.objects, views, walk.width, walk.height, supersample);
     report.supersample = reference.supersample;
     report.viewsWithSupersampleExtras = reference.viewsWithSupersampleExtras;
     report.supersampleExtras = reference.supersampleExtras;
@@ -90,6 +77,40 @@ BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& 
                      "bench's extraction in "
                   << replay->mismatchedQueries() << " queries; those views drew everything" << std::endl;
     relateToBaselines(report.modes);
+    report.views = views.size();
+}
+} // namespace
+
+BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& modes)
+{
+    const viewer::ViewerScene scene = loadScene(options);
+    core::Walk walk = subsampledWalk(scene.walk, options.views);
+    if (options.cube)
+        walk = cubeFaceWalk(walk);
+    const std::vector<BenchView> views = makeBenchViews(walk);
+    const core::Scene& model = scene.objects->scene;
+    std::cerr << "scene: " << scene.name << " (" << model.objects.size() << " objects, " << model.totalTriangles()
+              << " triangles), walk: " << scene.walkSource << ", " << views.size() << " views at " << walk.width << "x"
+              << walk.height << (options.cube ? " (six cube faces per walk key)" : "") << std::endl;
+
+    BenchReport report;
+    report.scene = scene.name;
+    report.triangles = model.totalTriangles();
+    report.objects = model.objects.size();
+    report.cube = options.cube;
+    report.width = walk.width;
+    report.height = walk.height;
+    report.command = options.commandLine;
+    report.supersample = options.supersample;
+    if (!options.cullOnly)
+        renderModes(report, scene, walk, views, modes, options.supersample);
+    if (options.sweeps())
+    {
+        report.sweeps = runCullSweeps(model, scene.walk, modes, {options.speeds, options.threads, options.cube});
+        if (report.sweeps.points.empty())
+            std::cerr << "osgvisbench: warning: no module-chain mode to sweep (osg, osg-oq and exact are not swept)"
+                      << std::endl;
+    }
     return report;
 }
 } // namespace osgVis::bench

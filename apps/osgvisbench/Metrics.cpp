@@ -1,5 +1,7 @@
 #include "Metrics.h"
 
+#include "SampleStatistics.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -31,31 +33,6 @@ struct CullTally
         }
     }
 };
-
-std::vector<double> finiteValues(const std::vector<double>& values)
-{
-    std::vector<double> finite;
-    std::copy_if(values.begin(), values.end(), std::back_inserter(finite), [](double x) { return std::isfinite(x); });
-    std::sort(finite.begin(), finite.end());
-    return finite;
-}
-
-std::optional<double> median(const std::vector<double>& sorted)
-{
-    if (sorted.empty())
-        return std::nullopt;
-    const std::size_t n = sorted.size();
-    return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-}
-
-// Nearest-rank percentile: the smallest value with at least p of the samples at or below it.
-std::optional<double> percentile(const std::vector<double>& sorted, double p)
-{
-    if (sorted.empty())
-        return std::nullopt;
-    const std::size_t rank = std::size_t(std::ceil(p * double(sorted.size())));
-    return sorted[std::min(sorted.size(), std::max<std::size_t>(rank, 1)) - 1];
-}
 
 const ModeResult* findKind(const std::vector<ModeResult>& results, BenchMode::Kind kind)
 {
@@ -107,7 +84,7 @@ ModeResult measureMode(const BenchMode& mode, const core::Scene& scene, const Or
     m.occlusionEfficacy = ratio(inFrustum.culledHiddenTriangles, inFrustum.hiddenTriangles);
     m.overestimation = ratio(drawnTriangles, exactTriangles);
     m.drawnFraction = ratio(drawnTriangles, double(reference.views.size()) * double(scene.totalTriangles()));
-    const std::vector<double> cullMs = finiteValues(pass.cullMs);
+    const std::vector<double> cullMs = sortedFinite(pass.cullMs);
     m.cullMsMedian = median(cullMs);
     m.cullMsP99 = percentile(cullMs, 0.99);
     m.fps = ratio(double(pass.emitted.size()), pass.renderSeconds);

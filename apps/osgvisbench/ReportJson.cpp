@@ -55,6 +55,30 @@ void writeMode(std::ostream& out, const ModeResult& result)
         << "      \"fps_vs_exact\": " << jsonNumber(m.fpsVsExact) << "\n"
         << "    }";
 }
+
+void writeSweepPoint(std::ostream& out, const SweepPoint& point)
+{
+    out << "    {\"mode\": " << jsonString(point.mode) << ", \"speed\": " << point.speed
+        << ", \"threads\": " << point.threads << ", \"views\": " << point.views
+        << ", \"cull_ms_median\": " << jsonNumber(point.cullMsMedian)
+        << ", \"cull_ms_p99\": " << jsonNumber(point.cullMsP99)
+        << ", \"visible_mean\": " << jsonNumber(point.visibleMean) << "}";
+}
+
+void writeSweeps(std::ostream& out, const SweepReport& sweeps)
+{
+    out << "  \"sweeps\": [";
+    for (std::size_t i = 0; i < sweeps.points.size(); ++i)
+    {
+        out << (i ? ",\n" : "\n");
+        writeSweepPoint(out, sweeps.points[i]);
+    }
+    out << (sweeps.points.empty() ? "],\n" : "\n  ],\n") << "  \"identical_across_threads\": {";
+    for (std::size_t i = 0; i < sweeps.determinism.size(); ++i)
+        out << (i ? ", " : "") << jsonString(sweeps.determinism[i].mode) << ": "
+            << (sweeps.determinism[i].identicalAcrossThreads ? "true" : "false");
+    out << "}\n";
+}
 } // namespace
 
 void writeReportJson(std::ostream& out, const BenchReport& report)
@@ -65,6 +89,7 @@ void writeReportJson(std::ostream& out, const BenchReport& report)
         << "  \"objects\": " << report.objects << ",\n"
         << "  \"views\": " << report.views << ",\n"
         << "  \"size\": [" << report.width << ", " << report.height << "],\n"
+        << "  \"cube\": " << (report.cube ? "true" : "false") << ",\n"
         << "  \"command\": " << jsonString(report.command) << ",\n"
         << "  \"oracle\": {\n"
         << "    \"supersample\": " << report.supersample << ",\n"
@@ -80,8 +105,9 @@ void writeReportJson(std::ostream& out, const BenchReport& report)
         writeMode(out, report.modes[i]);
         out << (i + 1 < report.modes.size() ? ",\n" : "\n");
     }
-    out << "  }\n"
-        << "}\n";
+    out << "  },\n";
+    writeSweeps(out, report.sweeps);
+    out << "}\n";
 }
 
 void saveReportJson(const std::string& path, const BenchReport& report)

@@ -1,5 +1,6 @@
 #include "ReportTable.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -26,18 +27,20 @@ std::string cell(const std::string& text, int width)
 {
     return text.size() >= std::size_t(width) ? text + " " : std::string(std::size_t(width) - text.size(), ' ') + text;
 }
-} // namespace
 
-void writeReportTable(std::ostream& out, const BenchReport& report)
+// Wide enough for the heading "mode" and every row's mode name.
+template <typename Rows, typename NameOf> std::size_t nameColumnWidth(const Rows& rows, NameOf nameOf)
 {
-    out << "scene: " << report.scene << "\n"
-        << "objects: " << report.objects << "  triangles: " << report.triangles << "  views: " << report.views
-        << "  size: " << report.width << "x" << report.height << "  oracle supersample: " << report.supersample
-        << " (extra objects in " << report.viewsWithSupersampleExtras.size() << " views)\n\n";
+    std::size_t width = 4;
+    for (const auto& row : rows)
+        width = std::max(width, nameOf(row).size());
+    return width;
+}
 
-    std::size_t nameWidth = 4;
-    for (const ModeResult& result : report.modes)
-        nameWidth = std::max(nameWidth, result.mode.name.size());
+void writeModeTable(std::ostream& out, const BenchReport& report)
+{
+    const std::size_t nameWidth =
+        nameColumnWidth(report.modes, [](const ModeResult& result) { return result.mode.name; });
     out << leftCell("mode", nameWidth) << cell("false-invis", 12) << cell("efficacy", 10) << cell("occl.eff", 10)
         << cell("overest", 9) << cell("drawn%", 8) << cell("cull ms med/p99", 17) << cell("fps", 9)
         << cell("speedup", 9) << "\n";
@@ -50,6 +53,41 @@ void writeReportTable(std::ostream& out, const BenchReport& report)
             << cell(formatted(m.cullMsMedian, "%.2f") + "/" + formatted(m.cullMsP99, "%.2f"), 17)
             << cell(formatted(m.fps, "%.1f"), 9) << cell(formatted(m.speedupVsOsg, "%.2fx"), 9) << "\n";
     }
+}
+
+void writeSweepTable(std::ostream& out, const SweepReport& sweeps)
+{
+    out << "\ncull-only sweeps (module chain on the extracted scene, no rendering; ms per query):\n";
+    const std::size_t nameWidth = nameColumnWidth(sweeps.points, [](const SweepPoint& point) { return point.mode; });
+    out << leftCell("mode", nameWidth) << cell("speed", 7) << cell("threads", 8) << cell("views", 7)
+        << cell("cull ms med/p99", 17) << cell("visible", 10) << "\n";
+    for (const SweepPoint& point : sweeps.points)
+        out << leftCell(point.mode, nameWidth) << cell(std::to_string(point.speed) + "x", 7)
+            << cell(std::to_string(point.threads), 8) << cell(std::to_string(point.views), 7)
+            << cell(formatted(point.cullMsMedian, "%.3f") + "/" + formatted(point.cullMsP99, "%.3f"), 17)
+            << cell(formatted(point.visibleMean, "%.1f"), 10) << "\n";
+    for (const SweepDeterminism& determinism : sweeps.determinism)
+    {
+        out << determinism.mode << ": visible sets identical across thread counts: ";
+        if (determinism.identicalAcrossThreads)
+            out << "yes\n";
+        else
+            out << "NO (" << determinism.differingViews << " answers differ)\n";
+    }
+}
+} // namespace
+
+void writeReportTable(std::ostream& out, const BenchReport& report)
+{
+    out << "scene: " << report.scene << "\n"
+        << "objects: " << report.objects << "  triangles: " << report.triangles << "  views: " << report.views
+        << (report.cube ? " (cube faces)" : "") << "  size: " << report.width << "x" << report.height
+        << "  oracle supersample: " << report.supersample << " (extra objects in "
+        << report.viewsWithSupersampleExtras.size() << " views)\n\n";
+    if (!report.modes.empty())
+        writeModeTable(out, report);
+    if (!report.sweeps.points.empty())
+        writeSweepTable(out, report.sweeps);
     out.flush();
 }
 } // namespace osgVis::bench

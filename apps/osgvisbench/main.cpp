@@ -1,6 +1,7 @@
 // osgvisbench: every culling mode side by side over one scene and walk, measured against the
 // exact-visibility oracle (docs/benchmark.md). Exit status 1 when a conservative mode culled a
-// visible object, so CI can run the bench as a check.
+// visible object or answered differently at different thread counts, so CI can run the bench as a
+// check.
 #include "BenchMode.h"
 #include "BenchOptions.h"
 #include "BenchRun.h"
@@ -25,6 +26,21 @@ int reportFalseInvisible(const BenchReport& report)
         std::cerr << "osgvisbench: FAIL: conservative mode '" << result.mode.name << "' culled "
                   << result.metrics.falseInvisible << " visible objects in " << result.viewsWithFalseInvisible << " of "
                   << report.views << " views" << std::endl;
+        ++failures;
+    }
+    return failures;
+}
+
+// The conservative swept modes whose answer changed with the thread count; prints one line each.
+int reportNondeterminism(const BenchReport& report)
+{
+    int failures = 0;
+    for (const SweepDeterminism& determinism : report.sweeps.determinism)
+    {
+        if (!determinism.conservative || determinism.identicalAcrossThreads)
+            continue;
+        std::cerr << "osgvisbench: FAIL: conservative mode '" << determinism.mode << "' gave different visible sets "
+                  << "at different thread counts in " << determinism.differingViews << " answers" << std::endl;
         ++failures;
     }
     return failures;
@@ -57,7 +73,8 @@ int main(int argc, char** argv)
         writeReportTable(std::cout, report);
         if (!options.jsonFile.empty())
             saveReportJson(options.jsonFile, report);
-        return reportFalseInvisible(report) == 0 ? 0 : 1;
+        const int failures = reportFalseInvisible(report) + reportNondeterminism(report);
+        return failures == 0 ? 0 : 1;
     }
     catch (const std::exception& e)
     {
