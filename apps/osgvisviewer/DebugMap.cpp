@@ -2,6 +2,7 @@
 
 #include "CameraSetup.h"
 #include "CullingModes.h"
+#include "MapGeometry.h"
 
 #include <osgVis/core/ModuleRegistry.h>
 #include <osgVis/core/View.h>
@@ -23,29 +24,6 @@ const osg::Vec4 DrawnColour(0.25f, 0.85f, 0.3f, 1.0f);
 const osg::Vec4 CulledColour(0.95f, 0.2f, 0.2f, 1.0f);
 const osg::Vec4 OutsideColour(0.55f, 0.55f, 0.55f, 1.0f);
 const float FillAlpha = 0.35f;
-
-// One geometry of the map with its own vertex/colour arrays, drawn after `order - 1` others.
-osg::ref_ptr<osg::Geometry> makeLayer(GLenum primitive, unsigned vertexCount, int order, const osg::Vec4& colour,
-                                      bool perVertexColour)
-{
-    osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
-    geometry->setDataVariance(osg::Object::DYNAMIC); // rewritten every frame while the map shows
-    geometry->setUseDisplayList(false);
-    geometry->setUseVertexBufferObjects(true);
-    geometry->setVertexArray(new osg::Vec3Array(vertexCount));
-    osg::ref_ptr<osg::Vec4Array> colours = new osg::Vec4Array(perVertexColour ? vertexCount : 1);
-    std::fill(colours->begin(), colours->end(), colour);
-    geometry->setColorArray(colours.get(), perVertexColour ? osg::Array::BIND_PER_VERTEX : osg::Array::BIND_OVERALL);
-    geometry->addPrimitiveSet(new osg::DrawArrays(primitive, 0, vertexCount));
-    // note: with depth testing off, only the bin number keeps the layers in order.
-    geometry->getOrCreateStateSet()->setRenderBinDetails(order, "RenderBin");
-    return geometry;
-}
-
-void setPlanarVertex(osg::Vec3Array& vertices, unsigned i, double x, double y)
-{
-    vertices[i].set(float(x), float(y), 0.0f);
-}
 } // namespace
 
 class DebugMap::Refresh : public osg::NodeCallback
@@ -95,7 +73,8 @@ void DebugMap::buildGeometry()
     for (const core::SceneObject& object : objects)
         if (!(object.flags & core::OBJECT_ALWAYS_VISIBLE) && !object.bounds.empty())
             _drawOrder.push_back(object.id);
-    auto footprint = [&](core::ObjectId id) {
+    auto footprint = [&](core::ObjectId id)
+    {
         const core::Vec3 e = objects[id].bounds.extent();
         return e.x * e.y;
     };
@@ -103,27 +82,20 @@ void DebugMap::buildGeometry()
                      [&](core::ObjectId a, core::ObjectId b) { return footprint(a) > footprint(b); });
 
     const unsigned count = unsigned(_drawOrder.size());
-    osg::ref_ptr<osg::Geometry> background = makeLayer(GL_QUADS, 4, 1, osg::Vec4(0.08f, 0.08f, 0.1f, 1.0f), false);
+    osg::ref_ptr<osg::Geometry> background =
+        makeMapLayer(GL_QUADS, 4, BackgroundBin, osg::Vec4(0.08f, 0.08f, 0.1f, 1.0f), false);
     background->setName("background");
-    _fills = makeLayer(GL_QUADS, 4 * count, 2, OutsideColour, true);
-    _outlines = makeLayer(GL_LINES, 8 * count, 3, OutsideColour, true);
-    _frustum = makeLayer(GL_LINES, 24, 4, osg::Vec4(1.0f, 0.9f, 0.2f, 1.0f), false);
-    _eye = makeLayer(GL_POINTS, 1, 5, osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f), false);
+    _fills = makeMapLayer(GL_QUADS, 4 * count, ObjectFillBin, OutsideColour, true);
+    _outlines = makeMapLayer(GL_LINES, 8 * count, ObjectOutlineBin, OutsideColour, true);
+    _frustum = makeMapLayer(GL_LINES, 24, FrustumBin, osg::Vec4(1.0f, 0.9f, 0.2f, 1.0f), false);
+    _eye = makeMapLayer(GL_POINTS, 1, EyeBin, osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f), false);
     _eye->getOrCreateStateSet()->setAttribute(new osg::Point(7.0f));
 
     osg::Vec3Array& fill = static_cast<osg::Vec3Array&>(*_fills->getVertexArray());
     osg::Vec3Array& outline = static_cast<osg::Vec3Array&>(*_outlines->getVertexArray());
     for (unsigned i = 0; i < count; ++i)
     {
-        const core::Aabb& b = objects[_drawOrder[i]].bounds;
-        const double xs[4] = {b.min.x, b.max.x, b.max.x, b.min.x};
-        const double ys[4] = {b.min.y, b.min.y, b.max.y, b.max.y};
-        for (unsigned corner = 0; corner < 4; ++corner)
-        {
-            setPlanarVertex(fill, 4 * i + corner, xs[corner], ys[corner]);
-            setPlanarVertex(outline, 8 * i + 2 * corner, xs[corner], ys[corner]);
-            setPlanarVertex(outline, 8 * i + 2 * corner + 1, xs[(corner + 1) % 4], ys[(corner + 1) % 4]);
-        }
+        setFootprint(fill, outline, i, objects[_drawOrder[i]].bounds);
     }
 
     _label = new osgText::Text;
@@ -132,12 +104,15 @@ void DebugMap::buildGeometry()
     _label->setCharacterSize(13.0f);
     _label->setAlignment(osgText::Text::LEFT_TOP);
     _label->setColor(osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f));
-    _label->getOrCreateStateSet()->setRenderBinDetails(6, "RenderBin");
+    _label->getOrCreateStateSet()->setRenderBinDetails(LabelBin, "RenderBin");
 
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-    for (osg::Drawable* drawable : {static_cast<osg::Drawable*>(background.get()), static_cast<osg::Drawable*>(_fills.get()),
-                                    static_cast<osg::Drawable*>(_outlines.get()), static_cast<osg::Drawable*>(_frustum.get()),
-                                    static_cast<osg::Drawable*>(_eye.get()), static_cast<osg::Drawable*>(_label.get())})
+    for (osg::Drawable* drawable :
+         {static_cast<osg::Drawable*>(background.get()), static_cast<osg::Drawable*>(_fills.get()),
+          static_cast<osg::Drawable*>(_outlines.get()), static_cast<osg::Drawable*>(_frustum.get()),
+          static_cast<osg::Drawable*>(_eye.get()), static_cast<osg::Drawable*>(_label.get())})
+        geode->addDrawable(drawable);
+    for (osg::Drawable* drawable : _recordLayers.drawables())
         geode->addDrawable(drawable);
     // note: the map's own geometry must never be culled away by small-feature or frustum tests.
     geode->setCullingActive(false);
@@ -164,6 +139,9 @@ void DebugMap::followMode()
     {
         _chain = core::createChain(_mode);
         _chain.setScene(_chainScene->scene);
+        // Modules with a spatial structure describe each query here; the others leave it empty.
+        for (std::size_t stage = 0; stage < _chain.size(); ++stage)
+            _chain.module(stage).setDebugRecord(&_record);
     }
     catch (const std::exception& e)
     {
@@ -221,9 +199,9 @@ void DebugMap::refresh(double time)
         return;
     const osg::Viewport& viewport = *observed->getViewport();
     followMode();
-    const core::View view = core::makeView(toCoreMatrix(observed->getViewMatrix()),
-                                           toCoreMatrix(observed->getProjectionMatrix()), time,
-                                           std::uint32_t(viewport.width()), std::uint32_t(viewport.height()));
+    const core::View view =
+        core::makeView(toCoreMatrix(observed->getViewMatrix()), toCoreMatrix(observed->getProjectionMatrix()), time,
+                       std::uint32_t(viewport.width()), std::uint32_t(viewport.height()));
     classify(view);
 
     // The frustum's eight corners, from clip space back to the world, then flattened onto z = 0.
@@ -231,7 +209,8 @@ void DebugMap::refresh(double time)
     core::Vec3 corners[8];
     for (int i = 0; i < 8; ++i)
     {
-        const core::Vec4 p = clipToWorld * core::Vec4((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0, 1.0);
+        const core::Vec4 p =
+            clipToWorld * core::Vec4((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0, 1.0);
         corners[i] = core::Vec3(p) / p.w;
     }
     static const int edges[12][2] = {{0, 1}, {1, 3}, {3, 2}, {2, 0}, {4, 5}, {5, 7},
@@ -261,8 +240,12 @@ void DebugMap::classify(const core::View& view)
     }
     else
     {
+        _record.clear();
         _chain.cull(view, _visible);
     }
+    if (_chain.empty())
+        _record.clear();
+    _recordLayers.update(_record);
 
     osg::Vec4Array& fill = static_cast<osg::Vec4Array&>(*_fills->getColorArray());
     osg::Vec4Array& outline = static_cast<osg::Vec4Array&>(*_outlines->getColorArray());
@@ -293,9 +276,12 @@ void DebugMap::classify(const core::View& view)
     outline.dirty();
 
     std::ostringstream text;
-    text << "mode " << _mode << (_chain.empty() && _mode != OsgMode ? " (frustum test)" : "") << "   t " << view.time << " s\n"
+    text << "mode " << _mode << (_chain.empty() && _mode != OsgMode ? " (frustum test)" : "") << "   t " << view.time
+         << " s\n"
          << "drawn " << drawn << "  culled " << culled << "\n"
          << "outside " << outside << "  of " << objects.size();
+    if (!_recordLayers.legend().empty())
+        text << "\n" << _recordLayers.legend();
     _label->setText(text.str());
 }
 } // namespace osgVis::viewer

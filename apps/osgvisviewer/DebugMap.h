@@ -1,9 +1,11 @@
 #pragma once
 // Top-down plan of the scene for checking a culling mode by eye: every object's footprint coloured
 // drawn (green), culled inside the frustum (red) or outside the frustum (grey), plus the frustum
-// wedge and the eye of the observed camera. Drawn by an orthographic HUD camera looking down the
+// wedge and the eye of the observed camera; over it, what a module with a spatial structure recorded
+// about the same query (DebugRecordLayers). Drawn by an orthographic HUD camera looking down the
 // scene's z axis (the generator's and OSG's up axis).
 #include "CullingModes.h"
+#include "DebugRecordLayers.h"
 
 #include <osgVis/SceneExtractor>
 #include <osgVis/core/ModuleChain.h>
@@ -45,10 +47,12 @@ private:
 
     osg::ref_ptr<const ExtractedScene> _objects;
     const CullingModes& _modes;
-    std::string _mode;                               // mode of _chain
-    osg::ref_ptr<const ExtractedScene> _chainScene;  // the group's extraction _chain works on
-    core::ModuleChain _chain;                        // empty: frustum test only
+    std::string _mode;                              // mode of _chain
+    osg::ref_ptr<const ExtractedScene> _chainScene; // the group's extraction _chain works on
+    core::ModuleChain _chain;                       // empty: frustum test only
     core::VisibleSet _visible;
+    core::DebugRecord _record; // what _chain's stages recorded about their last query
+    DebugRecordLayers _recordLayers;
     std::vector<core::ObjectId> _drawOrder; // largest footprint first, so small ones stay visible
 
     osg::ref_ptr<osg::Camera> _camera;

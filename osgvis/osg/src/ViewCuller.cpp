@@ -19,6 +19,7 @@ struct ViewCuller::PerView
     core::ModuleChain chain;
     osg::ref_ptr<const ExtractedScene> scene; // the one `chain` was built for
     core::VisibleSet visible;
+    core::DebugRecord* debugRecord = nullptr; // the one `chain`'s stages were given
 };
 
 namespace
@@ -99,6 +100,19 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         view = viewFor(key);
     }
 
+    std::unique_lock<std::mutex> debugLock(_debugMutex);
+    core::DebugRecord* const record = _debugRecord;
+    if (record)
+        record->clear();
+    else
+        debugLock.unlock();
+    if (view->debugRecord != record)
+    {
+        for (std::size_t stage = 0; stage < view->chain.size(); ++stage)
+            view->chain.module(stage).setDebugRecord(record);
+        view->debugRecord = record;
+    }
+
     const auto start = std::chrono::steady_clock::now();
     if (view->scene != scene)
     {
@@ -113,6 +127,8 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
                        viewport ? static_cast<std::uint32_t>(viewport->height()) : 1024u);
     view->chain.cull(coreView, view->visible);
     const auto end = std::chrono::steady_clock::now();
+    if (debugLock.owns_lock())
+        debugLock.unlock();
 
     CullStatistics figures;
     figures.objects = static_cast<unsigned>(scene->scene.objects.size());
@@ -142,5 +158,18 @@ osg::ref_ptr<const ExtractedScene> ViewCuller::getScene() const
 {
     std::lock_guard<std::mutex> lock(_mutex);
     return _scene;
+}
+
+void ViewCuller::setDebugRecord(core::DebugRecord* record)
+{
+    // Waits for a query writing the previous record; later queries hand the new one to their stages.
+    std::lock_guard<std::mutex> lock(_debugMutex);
+    _debugRecord = record;
+}
+
+core::DebugRecord ViewCuller::getDebugRecord() const
+{
+    std::lock_guard<std::mutex> lock(_debugMutex);
+    return _debugRecord ? *_debugRecord : core::DebugRecord();
 }
 } // namespace osgVis
