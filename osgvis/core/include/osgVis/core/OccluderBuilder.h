@@ -11,7 +11,11 @@ struct OccluderBuildOptions
     // Polygons smaller than this (world units²) are dropped: they hide too little to pay for a test.
     double minArea = 1e-4;
     // Triangles whose unit normals differ by less than this angle (radians) and whose planes are
-    // within planeTolerance × polygon size count as coplanar.
+    // within planeTolerance × polygon size count as coplanar. planeTolerance is also the sine of
+    // the largest bend of an outline that still counts as straight (convexity, collinear vertices),
+    // and triangles thinner than it relative to their length are slivers. Both tests also allow
+    // the few units in the last place that float storage of Scene::triangles may have moved a
+    // vertex, so tessellated walls far from the origin still merge.
     double coplanarAngle = 1e-5;
     double planeTolerance = 1e-6;
     // Vertices closer than this (relative to the scene size) are welded before connectivity.
@@ -23,8 +27,12 @@ struct OccluderBuildOptions
 
 // Eligible sources: Scene::occluders (stated polygons, two-sided), OBJECT_OCCLUDER objects and,
 // with sceneGeometry, every object that is not DYNAMIC, TRANSPARENT, ALWAYS_VISIBLE or
-// NO_AUTO_OCCLUDER. OBJECT_CULL_BACK objects give one-sided polygons; OBJECT_CULL_FRONT ones
-// give one-sided polygons facing the other way; both flags: none. Degenerate triangles (zero
-// area, slivers, collinear or non-finite vertices) never become occluders.
+// NO_AUTO_OCCLUDER. OBJECT_OCCLUDER overrides NO_AUTO_OCCLUDER only: DYNAMIC, TRANSPARENT and
+// ALWAYS_VISIBLE objects never occlude. OBJECT_CULL_BACK objects give one-sided polygons;
+// OBJECT_CULL_FRONT ones give one-sided polygons facing the other way; both flags: none.
+// Degenerate triangles (zero area, slivers, collinear or non-finite vertices) never become
+// occluders. Polygons have at most 32 corners, plus straight-line vertices kept where the
+// neighbour across the outline changes; they come in object order (per object, in the order of
+// the triangles that seeded them), then the stated polygons. Deterministic.
 std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const OccluderBuildOptions& options = {});
 } // namespace osgVis::core

@@ -27,7 +27,11 @@ class OccluderSelector
 {
 public:
     // `region` is the part of space with leaves (the scene bounds, enlarged a little); an eye
-    // outside it uses the root's list.
+    // outside it uses the root's list, which holds every polygon. A leaf lists each polygon whose
+    // areaAngle can reach the threshold from some point of the leaf's closed box (an upper bound
+    // over the box decides, so lists may hold a few more). Splitting also stops at fixed caps on
+    // cells and list entries, so dense scenes keep a bounded tree. `polygons` must outlive the
+    // selector's use.
     void build(const std::vector<OccluderPolygon>& polygons, const Aabb& region, const OccluderSelectorOptions& options = {});
 
     // Leaf holding `eye` (root index 0 when outside the region).

@@ -1,0 +1,335 @@
+// Occluder polygons from scene geometry: weld, connect (OpenMesh), merge coplanar neighbours into
+// convex polygons, then link polygons across the edges they share.
+#include <osgVis/core/OccluderBuilder.h>
+
+#include "BoundaryLoop.h"
+#include "CoplanarMerger.h"
+#include "VertexWelder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+namespace osgVis::core
+{
+namespace
+{
+// More corners cost more per occlusion test than the extra area is worth.
+constexpr std::uint32_t MaxCorners = 32;
+
+bool isEligible(const SceneObject& object, bool sceneGeometry)
+{
+    const std::uint32_t flags = object.flags;
+    // Moving, see-through or unbounded geometry never hides anything reliably, stated or not.
+    if (flags & (OBJECT_DYNAMIC | OBJECT_TRANSPARENT | OBJECT_ALWAYS_VISIBLE))
+        return false;
+    if ((flags & OBJECT_CULL_BACK) && (flags & OBJECT_CULL_FRONT))
+        return false; // neither side is drawn
+    // A stated occluder is the modeller's word, so it needs no automatic eligibility.
+    if (flags & OBJECT_OCCLUDER)
+        return true;
+    return sceneGeometry && !(flags & OBJECT_NO_AUTO_OCCLUDER);
+}
+
+bool isFinite(const Vec3& v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Triangles [first, first + count) of an object, clipped to what the scene holds.
+std::pair<std::size_t, std::size_t> triangleRange(const Scene& scene, const SceneObject& object)
+{
+    const std::size_t first = std::min<std::size_t>(object.firstTriangle, scene.triangles.size());
+    const std::size_t end =
+        std::min<std::size_t>(std::size_t(object.firstTriangle) + object.triangleCount, scene.triangles.size());
+    return {first, std::max(first, end)};
+}
+
+struct ObjectTriangles
+{
+    ObjectId owner;
+    bool oneSided;
+    std::vector<MergeTriangle> triangles;
+};
+
+struct Region
+{
+    std::vector<std::uint32_t> loop; // welded ids, counter-clockwise around `normal`
+    Vec3 normal;
+    ObjectId owner;
+    bool oneSided;
+};
+
+// The triangle with welded corners, or false when its plane cannot be trusted: repeated or
+// collinear corners, or a sliver thinner than the plane tolerance relative to its length.
+bool weldedTriangle(const std::array<std::uint32_t, 3>& ids, const std::vector<Vec3>& positions, double planeTolerance,
+                    MergeTriangle& out)
+{
+    if (ids[0] == ids[1] || ids[1] == ids[2] || ids[2] == ids[0])
+        return false;
+    const Vec3& a = positions[ids[0]];
+    const Vec3& b = positions[ids[1]];
+    const Vec3& c = positions[ids[2]];
+    const Vec3 n = glm::cross(b - a, c - a);
+    const double twiceArea = glm::length(n);
+    const double longest2 = std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
+    if (!(twiceArea > 0.0) || !std::isfinite(twiceArea) || 0.5 * twiceArea < planeTolerance * longest2)
+        return false;
+    out.vertices = ids;
+    out.normal = n / twiceArea;
+    // Float storage moves each corner by up to storageSlack, which tilts the normal by up to
+    // about twice that over the triangle's smallest height.
+    const double height = twiceArea / std::sqrt(longest2);
+    out.normalSlack = 2.0 * std::max({storageSlack(a), storageSlack(b), storageSlack(c)}) / height;
+    return true;
+}
+
+// Neighbour of each loop edge (as a region index): the one other region whose loop has an edge
+// between the same two welded vertices; NoNeighbour when none or several do.
+std::vector<std::vector<std::uint32_t>> edgeNeighbours(const std::vector<Region>& regions)
+{
+    struct Edge
+    {
+        std::uint64_t key;
+        std::uint32_t region, index;
+    };
+    std::vector<Edge> edges;
+    std::size_t total = 0;
+    for (const Region& r : regions)
+        total += r.loop.size();
+    edges.reserve(total);
+    for (std::uint32_t r = 0; r < regions.size(); ++r)
+    {
+        const auto& loop = regions[r].loop;
+        for (std::uint32_t i = 0; i < loop.size(); ++i)
+        {
+            const std::uint32_t a = loop[i], b = loop[(i + 1) % loop.size()];
+            edges.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), r, i});
+        }
+    }
+    std::sort(edges.begin(), edges.end(),
+              [](const Edge& x, const Edge& y) {
+                  return x.key != y.key ? x.key < y.key
+                                        : (x.region != y.region ? x.region < y.region : x.index < y.index);
+              });
+
+    std::vector<std::vector<std::uint32_t>> across(regions.size());
+    for (std::size_t r = 0; r < regions.size(); ++r)
+        across[r].assign(regions[r].loop.size(), NoNeighbour);
+    for (std::size_t i = 0; i < edges.size();)
+    {
+        std::size_t j = i;
+        while (j < edges.size() && edges[j].key == edges[i].key)
+            ++j;
+        // note: three or more polygons on one edge (a fin on a wall) link none of them; an
+        // unlinked edge is always safe.
+        if (j - i == 2 && edges[i].region != edges[i + 1].region)
+        {
+            across[edges[i].region][edges[i].index] = edges[i + 1].region;
+            across[edges[i + 1].region][edges[i + 1].index] = edges[i].region;
+        }
+        i = j;
+    }
+    return across;
+}
+} // namespace
+
+std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const OccluderBuildOptions& options)
+{
+    const double planeTolerance = std::max(options.planeTolerance, 0.0);
+
+    // Extent of everything that may become an occluder: it scales the weld tolerance.
+    std::vector<ObjectId> sources;
+    std::size_t eligibleTriangles = 0;
+    Aabb extent;
+    for (const SceneObject& object : scene.objects)
+    {
+        if (!isEligible(object, options.sceneGeometry))
+            continue;
+        sources.push_back(ObjectId(&object - scene.objects.data()));
+        const auto [first, end] = triangleRange(scene, object);
+        eligibleTriangles += end - first;
+        for (std::size_t t = first; t < end; ++t)
+        {
+            const Triangle& tri = scene.triangles[t];
+            for (const Vec3f& v : {tri.a, tri.b, tri.c})
+            {
+                if (isFinite(Vec3(v)))
+                    extent.expand(Vec3(v));
+            }
+        }
+    }
+    std::vector<const ConvexPolygon*> stated;
+    for (const OccluderCandidate& candidate : scene.occluders)
+    {
+        if (!candidate.polygon.isValidOccluder(options.minArea, planeTolerance > 0.0 ? planeTolerance : 1e-6))
+            continue;
+        stated.push_back(&candidate.polygon);
+        for (const Vec3& v : candidate.polygon.vertices())
+            extent.expand(v);
+    }
+    if (extent.empty())
+        return {};
+
+    const double sceneSize = glm::length(extent.extent());
+    VertexWelder welder(extent.min, sceneSize, std::max(options.weldTolerance, 0.0) * sceneSize);
+    welder.reserve(eligibleTriangles); // closed meshes have about half as many vertices as triangles
+
+    std::vector<ObjectTriangles> objects;
+    objects.reserve(sources.size());
+    for (ObjectId id : sources)
+    {
+        const SceneObject& object = scene.objects[id];
+        const bool flip = (object.flags & OBJECT_CULL_FRONT) != 0;
+        ObjectTriangles entry{id, (object.flags & (OBJECT_CULL_BACK | OBJECT_CULL_FRONT)) != 0, {}};
+        const auto [first, end] = triangleRange(scene, object);
+        entry.triangles.reserve(end - first);
+        for (std::size_t t = first; t < end; ++t)
+        {
+            const Triangle& tri = scene.triangles[t];
+            const Vec3 a(tri.a), b(tri.b), c(tri.c);
+            if (!isFinite(a) || !isFinite(b) || !isFinite(c))
+                continue;
+            // Culled front faces: the drawn side is the back, so the winding turns round.
+            std::array<std::uint32_t, 3> ids{welder.weld(a), welder.weld(flip ? c : b), welder.weld(flip ? b : c)};
+            MergeTriangle merged;
+            if (weldedTriangle(ids, welder.positions(), planeTolerance, merged))
+                entry.triangles.push_back(merged);
+        }
+        if (!entry.triangles.empty())
+            objects.push_back(std::move(entry));
+    }
+    std::vector<std::vector<std::uint32_t>> statedLoops;
+    for (const ConvexPolygon* polygon : stated)
+    {
+        std::vector<std::uint32_t> loop;
+        for (const Vec3& v : polygon->vertices())
+        {
+            const std::uint32_t id = welder.weld(v);
+            if (loop.empty() || loop.back() != id)
+                loop.push_back(id);
+        }
+        while (loop.size() > 1 && loop.front() == loop.back())
+            loop.pop_back();
+        if (loop.size() >= 3)
+            statedLoops.push_back(std::move(loop));
+    }
+    const std::vector<Vec3>& positions = welder.positions();
+
+    CoplanarMergeOptions mergeOptions;
+    mergeOptions.sinCoplanarAngle = std::sin(std::clamp(options.coplanarAngle, 0.0, 1.5));
+    mergeOptions.planeTolerance = planeTolerance;
+    mergeOptions.turnTolerance = planeTolerance;
+    mergeOptions.maxCorners = MaxCorners;
+
+    // Objects merge independently (one OpenMesh mesh each), so they run in parallel; results are
+    // gathered in object order, which keeps the output the same on every run.
+    std::vector<std::vector<MergedPolygon>> mergedPerObject(objects.size());
+    tbb::enumerable_thread_specific<CoplanarMerger> mergers([&] { return CoplanarMerger(positions, mergeOptions); });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects.size()),
+                      [&](const tbb::blocked_range<std::size_t>& range)
+                      {
+                          CoplanarMerger& merger = mergers.local();
+                          for (std::size_t i = range.begin(); i != range.end(); ++i)
+                              merger.merge(objects[i].triangles, mergedPerObject[i]);
+                      });
+
+    std::vector<Region> regions;
+    auto keepIfLargeEnough = [&](Region region)
+    {
+        const double area = 0.5 * glm::length(loopNormal(region.loop, positions));
+        if (std::isfinite(area) && area > 0.0 && area >= options.minArea)
+            regions.push_back(std::move(region));
+    };
+    for (std::size_t i = 0; i < objects.size(); ++i)
+    {
+        for (MergedPolygon& polygon : mergedPerObject[i])
+            keepIfLargeEnough({std::move(polygon.loop), polygon.normal, objects[i].owner, objects[i].oneSided});
+    }
+    for (std::vector<std::uint32_t>& loop : statedLoops)
+    {
+        const Vec3 normal = glm::normalize(loopNormal(loop, positions));
+        keepIfLargeEnough({std::move(loop), normal, InvalidObject, false});
+    }
+
+    // Straight-line vertices go, except where the neighbour across the outline changes: there
+    // both polygons keep the vertex, so their shared edges still match end to end.
+    const std::vector<std::vector<std::uint32_t>> across = edgeNeighbours(regions);
+    std::vector<OccluderPolygon> polygons(regions.size());
+    std::vector<std::vector<std::uint32_t>> outlineIds(regions.size());
+    std::vector<bool> usable(regions.size());
+    for (std::size_t r = 0; r < regions.size(); ++r)
+    {
+        const Region& region = regions[r];
+        const std::size_t n = region.loop.size();
+        std::vector<bool> keep(n);
+        for (std::size_t i = 0; i < n; ++i)
+            keep[i] = across[r][(i + n - 1) % n] != across[r][i];
+        const std::vector<std::size_t> corners =
+            cornerIndices(region.loop, positions, region.normal, planeTolerance, keep);
+
+        OccluderPolygon& polygon = polygons[r];
+        for (std::size_t i : corners)
+        {
+            outlineIds[r].push_back(region.loop[i]);
+            polygon.vertices.push_back(positions[region.loop[i]]);
+            polygon.neighbours.push_back(across[r][i]);
+        }
+        const ConvexPolygon outline(polygon.vertices);
+        const Vec3 newell = outline.newellNormal();
+        polygon.area = 0.5 * glm::length(newell);
+        polygon.centroid = outline.centroid();
+        polygon.plane = Plane::fromPointNormal(polygon.centroid, newell / glm::length(newell));
+        polygon.oneSided = region.oneSided;
+        polygon.owner = region.owner;
+        usable[r] = corners.size() >= 3 && polygon.area > 0.0 && isFinite(polygon.plane.normal) &&
+                    std::isfinite(polygon.plane.d);
+    }
+
+    // A neighbour must have the very same edge back; tolerance calls made on each side alone
+    // could differ, and then the edge is left unlinked.
+    for (std::size_t p = 0; p < polygons.size(); ++p)
+    {
+        const auto& ids = outlineIds[p];
+        for (std::size_t i = 0; i < ids.size(); ++i)
+        {
+            std::uint32_t& q = polygons[p].neighbours[i];
+            if (q == NoNeighbour)
+                continue;
+            const std::uint32_t a = ids[i], b = ids[(i + 1) % ids.size()];
+            const auto& other = outlineIds[q];
+            bool matched = false;
+            for (std::size_t j = 0; j < other.size() && !matched; ++j)
+            {
+                const std::uint32_t c = other[j], d = other[(j + 1) % other.size()];
+                matched = ((c == b && d == a) || (c == a && d == b)) && polygons[q].neighbours[j] == p;
+            }
+            if (!matched)
+                q = NoNeighbour;
+        }
+    }
+
+    // note: outlines are built from loops that passed the convexity check, so none should fail
+    // here; should one, it goes and its neighbours' links to it are cut.
+    std::vector<std::uint32_t> newIndex(polygons.size(), NoNeighbour);
+    std::uint32_t kept = 0;
+    for (std::size_t p = 0; p < polygons.size(); ++p)
+    {
+        if (usable[p])
+            newIndex[p] = kept++;
+    }
+    for (std::size_t p = 0; p < polygons.size(); ++p)
+    {
+        if (!usable[p])
+            continue;
+        for (std::uint32_t& q : polygons[p].neighbours)
+            q = q == NoNeighbour ? NoNeighbour : newIndex[q];
+        if (newIndex[p] != p)
+            polygons[newIndex[p]] = std::move(polygons[p]);
+    }
+    polygons.resize(kept);
+    return polygons;
+}
+} // namespace osgVis::core
