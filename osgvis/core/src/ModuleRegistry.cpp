@@ -1,6 +1,7 @@
 #include <osgVis/core/ModuleRegistry.h>
 
 #include <osgVis/core/FrustumModule.h>
+#include <osgVis/core/OctreeModule.h>
 
 #include <map>
 #include <mutex>
@@ -11,7 +12,17 @@ namespace
 {
 struct Registry
 {
-    Registry() { factories["frustum"] = [] { return std::make_unique<FrustumModule>(); }; }
+    Registry()
+    {
+        factories["frustum"] = [] { return std::make_unique<FrustumModule>(); };
+        factories["octree"] = [] { return std::make_unique<OctreeModule>(); };
+        factories["octree-single"] = []
+        {
+            OctreeOptions single;
+            single.fuseConnected = false;
+            return std::make_unique<OctreeModule>(single);
+        };
+    }
 
     std::mutex mutex;
     std::map<std::string, ModuleFactory> factories;

@@ -1,0 +1,508 @@
+// Object-space occlusion culling after Coorg & Teller. Per frame: pick the k best occluders for
+// the eye (area-angle, from the eye's cell), drop those the renderer may not draw (in front of the
+// near plane), then walk the kd-tree: frustum planes and occluders together, whole subtrees
+// hidden at once, and only the occluders that partly hide a node passed on to its children.
+// The top of the tree is walked serially; the subtrees below a fixed frontier run in parallel
+// with an affinity partitioner, so a subtree tends to stay on the thread that has its caches.
+#include <osgVis/core/OctreeModule.h>
+
+#include "OcclusionCache.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace osgVis::core
+{
+namespace
+{
+// Bits of a 24-bit depth buffer we trust: a hidden box must lie farther behind its occluder than
+// 2^(24-3) depth steps' worth, or the two could z-fight and the box show through.
+constexpr double DepthResolution = double(1u << 21);
+// Angular safety margin (radians): a box must be hidden by about a tenth of a pixel at
+// 1280×1024 and 60° so rasterization rounding on the occluder's edges cannot reveal it.
+constexpr double AngularMargin = 1e-4;
+
+struct Range
+{
+    std::uint32_t first, count;
+};
+
+// Per-thread scratch of the traversal and what it found.
+struct TraversalOutput
+{
+    std::vector<Range> culled;                     // item ranges of hidden or outside-frustum subtrees
+    std::vector<std::vector<std::uint32_t>> lists; // partial-occluder list per depth
+    std::vector<const BoxOccluderPlanes*> partialPlanes;
+    std::vector<BoxOccluderPlanes> fusedPlanes;
+    std::vector<std::uint32_t> fusedCandidates, fusedGroup;
+    std::vector<const BoxOccluderPlanes*> fusedCandidatePlanes;
+    std::vector<std::size_t> fusedMembers;
+    std::vector<std::uint8_t> fusedTaken;
+    std::vector<DebugRecord::Node> debugNodes;
+    OctreeModule::Statistics statistics;
+
+    // Sized once for the tree's depth (see prepare): the traversal holds references into it.
+    std::vector<std::uint32_t>& list(std::uint32_t depth) { return lists[depth]; }
+    void prepare(std::size_t treeDepth) { lists.resize(treeDepth + 2); }
+};
+
+// A subtree handed from the serial top of the traversal to the parallel part.
+struct FrontierTask
+{
+    std::uint32_t node = 0;
+    std::uint32_t depth = 0;
+    bool active = false;
+    unsigned planeMask = 0;
+    std::vector<std::uint32_t> occluders;
+    TraversalOutput output;
+};
+} // namespace
+
+struct OctreeModule::Impl
+{
+    KdTree tree;
+    std::vector<OccluderPolygon> polygons;
+    OccluderSelector selector;
+    std::vector<BoxOcclusionCache> nodeCaches, objectCaches;
+    std::vector<std::int32_t> frontierSlot; // per node: its frontier task index, or -1
+    std::vector<FrontierTask> frontier;
+    tbb::affinity_partitioner affinity;
+    TraversalOutput serial;
+    double sceneSize = 1.0;
+    std::uint32_t frame = 0;
+    DebugRecord* debug = nullptr;
+    Statistics statistics;
+
+    // Per-frame inputs.
+    Vec3 eye{0.0};
+    const Frustum* frustum = nullptr;
+    double nearDistance = 0.0;
+    std::vector<std::uint32_t> selected, active;
+    std::vector<double> margins; // per polygon index, valid for `active` ones
+
+    void build(const Scene& scene, const OctreeOptions& options);
+    void chooseFrontier(std::size_t wanted);
+    std::size_t treeDepth() const;
+    void traverse(const Scene& scene, const OctreeOptions& options, std::uint32_t node, std::uint32_t depth,
+                  unsigned planeMask, const std::vector<std::uint32_t>& occluders, TraversalOutput& out,
+                  bool stopAtFrontier);
+    Occlusion testBox(BoxOcclusionCache& cache, const Aabb& box, const std::vector<std::uint32_t>& occluders, bool fuse,
+                      std::vector<std::uint32_t>& partial, TraversalOutput& out);
+    bool depthSeparated(const OccluderPolygon& polygon, const Aabb& box) const;
+    bool fusedHidden(const Aabb& box, const std::vector<std::uint32_t>& partial, TraversalOutput& out);
+};
+
+void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
+{
+    std::vector<Aabb> boxes;
+    boxes.reserve(scene.objects.size());
+    for (const SceneObject& o : scene.objects)
+        boxes.push_back(o.bounds);
+    tree.build(boxes, options.maxLeafObjects);
+
+    polygons = buildOccluderPolygons(scene, options.occluderBuild);
+    Aabb region = scene.bounds();
+    if (region.empty() || !region.finite())
+        region = Aabb(Vec3(-1.0), Vec3(1.0));
+    sceneSize = std::max(glm::length(region.extent()), 1e-9);
+    const Vec3 grow(0.05 * sceneSize);
+    region = Aabb(region.min - grow, region.max + grow);
+    OccluderSelectorOptions selection;
+    selection.threshold = options.areaAngleThreshold;
+    selector.build(polygons, region, selection);
+
+    nodeCaches.assign(tree.nodes().size(), BoxOcclusionCache());
+    objectCaches.assign(scene.objects.size(), BoxOcclusionCache());
+    margins.assign(polygons.size(), 0.0);
+    chooseFrontier(tree.empty() || tree.root().itemCount < options.parallelMinObjects ? 0 : 64);
+    const std::size_t depth = treeDepth();
+    serial.prepare(depth);
+    for (FrontierTask& task : frontier)
+        task.output.prepare(depth);
+    frame = 0;
+}
+
+// The frontier: up to `wanted` subtrees found by splitting the largest first, fixed for the
+// scene so each keeps its index (and so its thread affinity) from frame to frame.
+void OctreeModule::Impl::chooseFrontier(std::size_t wanted)
+{
+    frontierSlot.assign(tree.nodes().size(), -1);
+    frontier.clear();
+    if (wanted == 0)
+        return;
+    const std::vector<KdTree::Node>& nodes = tree.nodes();
+    std::vector<std::uint32_t> open{0};
+    while (open.size() < wanted)
+    {
+        const auto largest =
+            std::max_element(open.begin(), open.end(),
+                             [&](std::uint32_t a, std::uint32_t b) { return nodes[a].itemCount < nodes[b].itemCount; });
+        if (nodes[*largest].leaf())
+            break;
+        const KdTree::Node split = nodes[*largest];
+        *largest = split.left;
+        open.push_back(split.right);
+    }
+    std::sort(open.begin(), open.end());
+    frontier.resize(open.size());
+    for (std::size_t i = 0; i < open.size(); ++i)
+    {
+        frontier[i].node = open[i];
+        frontierSlot[open[i]] = static_cast<std::int32_t>(i);
+    }
+}
+
+// Connected occluders: each group of partial occluders linked through shared edges is tried as
+// one. Only polygons the box lies wholly behind can take part; leaving the others out only makes
+// their shared edges count as silhouettes, which is the cautious side.
+bool OctreeModule::Impl::fusedHidden(const Aabb& box, const std::vector<std::uint32_t>& partial, TraversalOutput& out)
+{
+    std::vector<std::uint32_t>& candidates = out.fusedCandidates;
+    std::vector<const BoxOccluderPlanes*>& candidatePlanes = out.fusedCandidatePlanes;
+    candidates.clear();
+    candidatePlanes.clear();
+    for (std::size_t i = 0; i < partial.size(); ++i)
+        if (out.partialPlanes[i]->boxSide != 0 && depthSeparated(polygons[partial[i]], box))
+        {
+            candidates.push_back(partial[i]);
+            candidatePlanes.push_back(out.partialPlanes[i]);
+        }
+
+    std::vector<std::uint8_t>& taken = out.fusedTaken;
+    taken.assign(candidates.size(), 0);
+    for (std::size_t seed = 0; seed < candidates.size(); ++seed)
+    {
+        if (taken[seed])
+            continue;
+        // Grow the group of candidates reachable from `seed` through neighbour links.
+        std::vector<std::uint32_t>& group = out.fusedGroup;
+        std::vector<std::size_t>& members = out.fusedMembers;
+        group.assign(1, candidates[seed]);
+        members.assign(1, seed);
+        taken[seed] = 1;
+        for (std::size_t g = 0; g < members.size(); ++g)
+            for (std::uint32_t neighbour : polygons[candidates[members[g]]].neighbours)
+                for (std::size_t c = 0; c < candidates.size(); ++c)
+                    if (!taken[c] && candidates[c] == neighbour)
+                    {
+                        taken[c] = 1;
+                        members.push_back(c);
+                        group.push_back(candidates[c]);
+                    }
+        if (group.size() < 2)
+            continue;
+        out.fusedPlanes.resize(members.size());
+        double margin = 0.0;
+        for (std::size_t g = 0; g < members.size(); ++g)
+        {
+            out.fusedPlanes[g] = *candidatePlanes[members[g]];
+            margin = std::max(margin, margins[group[g]]);
+        }
+        if (fusedInvisible(polygons, group, out.fusedPlanes, eye, margin))
+            return true;
+    }
+    return false;
+}
+
+std::size_t OctreeModule::Impl::treeDepth() const
+{
+    if (tree.empty())
+        return 0;
+    std::size_t deepest = 0;
+    std::vector<std::pair<std::uint32_t, std::size_t>> open{{0, 0}};
+    while (!open.empty())
+    {
+        const auto [index, depth] = open.back();
+        open.pop_back();
+        deepest = std::max(deepest, depth);
+        const KdTree::Node& node = tree.nodes()[index];
+        if (!node.leaf())
+        {
+            open.push_back({node.left, depth + 1});
+            open.push_back({node.right, depth + 1});
+        }
+    }
+    return deepest;
+}
+
+bool OctreeModule::Impl::depthSeparated(const OccluderPolygon& polygon, const Aabb& box) const
+{
+    const double eyeSide = polygon.plane.distance(eye) > 0.0 ? 1.0 : -1.0;
+    double behind = std::numeric_limits<double>::max(), farthest = 0.0;
+    for (int c = 0; c < 8; ++c)
+    {
+        const Vec3 corner = box.corner(c);
+        behind = std::min(behind, -eyeSide * polygon.plane.distance(corner));
+        farthest = std::max(farthest, glm::length(corner - eye));
+    }
+    const double tolerance = farthest * farthest / (nearDistance * DepthResolution) + 1e-6 * sceneSize;
+    return behind > tolerance;
+}
+
+Occlusion OctreeModule::Impl::testBox(BoxOcclusionCache& cache, const Aabb& box,
+                                      const std::vector<std::uint32_t>& occluders, bool fuse,
+                                      std::vector<std::uint32_t>& partial, TraversalOutput& out)
+{
+    partial.clear();
+    out.partialPlanes.clear();
+    bool computed = false;
+    const auto hiddenBy = [&](std::uint32_t o, const BoxOccluderPlanes& planes)
+    {
+        ++out.statistics.planeTests;
+        return classify(polygons[o], planes, eye, margins[o]);
+    };
+
+    // Coherence: the occluder that hid this box last frame usually still does.
+    if (cache.decidedBy != NoDecider && cache.decidedBy != FusedDecider &&
+        std::find(occluders.begin(), occluders.end(), cache.decidedBy) != occluders.end())
+    {
+        const std::uint32_t o = cache.decidedBy;
+        const BoxOccluderPlanes& planes = cache.planesFor(o, polygons[o], box, frame, computed);
+        if (hiddenBy(o, planes) == Occlusion::Invisible && depthSeparated(polygons[o], box))
+        {
+            ++out.statistics.cachedDecisions;
+            return Occlusion::Invisible;
+        }
+    }
+
+    for (std::uint32_t o : occluders)
+    {
+        const BoxOccluderPlanes& planes = cache.planesFor(o, polygons[o], box, frame, computed);
+        if (!computed)
+            ++out.statistics.cachedDecisions;
+        const Occlusion c = hiddenBy(o, planes);
+        if (c == Occlusion::Invisible && depthSeparated(polygons[o], box))
+        {
+            cache.decidedBy = o;
+            return Occlusion::Invisible;
+        }
+        if (c != Occlusion::Visible)
+        {
+            partial.push_back(o);
+            out.partialPlanes.push_back(&planes);
+        }
+    }
+
+    if (fuse && partial.size() >= 2 && fusedHidden(box, partial, out))
+    {
+        cache.decidedBy = FusedDecider;
+        return Occlusion::Invisible;
+    }
+    cache.decidedBy = NoDecider;
+    return partial.empty() ? Occlusion::Visible : Occlusion::Partial;
+}
+
+void OctreeModule::Impl::traverse(const Scene& scene, const OctreeOptions& options, std::uint32_t nodeIndex,
+                                  std::uint32_t depth, unsigned planeMask, const std::vector<std::uint32_t>& occluders,
+                                  TraversalOutput& out, bool stopAtFrontier)
+{
+    const KdTree::Node& node = tree.nodes()[nodeIndex];
+    if (stopAtFrontier && frontierSlot[nodeIndex] >= 0)
+    {
+        FrontierTask& task = frontier[std::size_t(frontierSlot[nodeIndex])];
+        task.active = true;
+        task.depth = depth;
+        task.planeMask = planeMask;
+        task.occluders = occluders;
+        return;
+    }
+    ++out.statistics.nodesVisited;
+    const auto record = [&](NodeState state)
+    {
+        if (debug)
+            out.debugNodes.push_back({node.bounds, state, depth});
+    };
+
+    // Lazy frustum culling: a node outside is dropped with its caches untouched.
+    const Containment inFrustum = frustum->classify(node.bounds, planeMask);
+    if (inFrustum == Containment::Outside)
+    {
+        ++out.statistics.nodesOutsideFrustum;
+        out.culled.push_back({node.firstItem, node.itemCount});
+        record(NodeState::OutsideFrustum);
+        return;
+    }
+
+    std::vector<std::uint32_t>& partial = out.list(depth);
+    if (!occluders.empty() && testBox(nodeCaches[nodeIndex], node.bounds, occluders, options.fuseConnected, partial,
+                                      out) == Occlusion::Invisible)
+    {
+        ++out.statistics.nodesInvisible;
+        out.culled.push_back({node.firstItem, node.itemCount});
+        record(NodeState::Invisible);
+        return;
+    }
+    if (occluders.empty())
+        partial.clear();
+    if (partial.empty() && inFrustum == Containment::Inside)
+    {
+        record(NodeState::Visible); // nothing below can be culled any more
+        return;
+    }
+
+    if (node.leaf())
+    {
+        const std::vector<std::uint32_t>& items = tree.items();
+        std::vector<std::uint32_t>& objectPartial = out.list(depth + 1);
+        for (std::uint32_t i = node.firstItem; i < node.firstItem + node.itemCount; ++i)
+        {
+            const Aabb& bounds = scene.objects[items[i]].bounds;
+            unsigned objectMask = planeMask;
+            NodeState state = NodeState::Visible;
+            if (frustum->classify(bounds, objectMask) == Containment::Outside)
+                state = NodeState::OutsideFrustum;
+            else if (!partial.empty() && testBox(objectCaches[items[i]], bounds, partial, options.fuseConnected,
+                                                 objectPartial, out) == Occlusion::Invisible)
+                state = NodeState::Invisible;
+            if (state != NodeState::Visible)
+                out.culled.push_back({i, 1});
+            if (debug) // leaves show their objects, the finest decisions made
+                out.debugNodes.push_back({bounds, state, depth + 1});
+        }
+        return;
+    }
+    traverse(scene, options, node.left, depth + 1, planeMask, partial, out, stopAtFrontier);
+    traverse(scene, options, node.right, depth + 1, planeMask, out.list(depth), out, stopAtFrontier);
+}
+
+OctreeModule::OctreeModule(const OctreeOptions& options) : _options(options), _impl(std::make_unique<Impl>())
+{
+    _options.occluders = std::min<std::uint32_t>(_options.occluders, std::uint32_t(BoxOcclusionCache::MaxRelations));
+}
+
+OctreeModule::~OctreeModule() = default;
+
+const char* OctreeModule::name() const
+{
+    return _options.fuseConnected ? "octree" : "octree-single";
+}
+
+void OctreeModule::setScene(const Scene& scene)
+{
+    _scene = &scene;
+    _impl->build(scene, _options);
+}
+
+void OctreeModule::sceneChanged(const SceneChange& change)
+{
+    (void)change;
+    setScene(*_scene); // note: occluders and tree both depend on the moved geometry
+}
+
+void OctreeModule::setDebugRecord(DebugRecord* record)
+{
+    _impl->debug = record;
+}
+
+OctreeModule::Statistics OctreeModule::lastStatistics() const
+{
+    return _impl->statistics;
+}
+
+void OctreeModule::cull(const View& view, VisibleSet& visible)
+{
+    Impl& m = *_impl;
+    if (!_scene || m.tree.empty())
+        return;
+    ++m.frame;
+    m.eye = view.eye;
+    m.frustum = &view.frustum;
+    m.statistics = Statistics();
+    if (m.debug)
+        m.debug->clear();
+    if (!_options.temporalCoherence)
+    {
+        for (BoxOcclusionCache& cache : m.nodeCaches)
+            cache.clear();
+        for (BoxOcclusionCache& cache : m.objectCaches)
+            cache.clear();
+    }
+
+    // Occluders need a point eye: orthographic views and a broken eye get frustum culling only.
+    m.active.clear();
+    const bool pointEye =
+        !view.orthographic && std::isfinite(m.eye.x) && std::isfinite(m.eye.y) && std::isfinite(m.eye.z);
+    const Mat4& projection = view.projectionMatrix;
+    m.nearDistance = projection[3][2] / (projection[2][2] - 1.0);
+    if (pointEye && m.nearDistance > 0.0 && std::isfinite(m.nearDistance) && !m.polygons.empty())
+    {
+        m.selector.select(m.eye, _options.occluders, m.selected);
+        const Plane& nearPlane = view.frustum.plane(Frustum::NEAR);
+        for (std::uint32_t o : m.selected)
+        {
+            // note: a polygon reaching in front of the near plane is clipped away where it would
+            // hide things, so it may not occlude at all
+            const OccluderPolygon& polygon = m.polygons[o];
+            const bool beyondNear = std::all_of(polygon.vertices.begin(), polygon.vertices.end(),
+                                                [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; });
+            if (!beyondNear)
+                continue;
+            double reach = 0.0;
+            for (const Vec3& v : polygon.vertices)
+                reach = std::max(reach, glm::length(v - m.eye));
+            m.margins[o] = 1e-6 * m.sceneSize + AngularMargin * reach;
+            m.active.push_back(o);
+        }
+    }
+    m.statistics.activeOccluders = static_cast<std::uint32_t>(m.active.size());
+
+    // Serial top, parallel frontier subtrees, each with its own output; merged in slot order.
+    for (FrontierTask& task : m.frontier)
+        task.active = false;
+    m.serial.culled.clear();
+    m.serial.debugNodes.clear();
+    m.serial.statistics = Statistics();
+    const bool parallel = !m.frontier.empty() && !m.debug;
+    m.traverse(*_scene, _options, 0, 0, 0x3Fu, m.active, m.serial, parallel);
+    if (parallel)
+    {
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, m.frontier.size(), 1),
+            [&](const tbb::blocked_range<std::size_t>& range)
+            {
+                for (std::size_t i = range.begin(); i != range.end(); ++i)
+                {
+                    FrontierTask& task = m.frontier[i];
+                    task.output.culled.clear();
+                    task.output.statistics = Statistics();
+                    if (task.active)
+                        m.traverse(*_scene, _options, task.node, task.depth, task.planeMask, task.occluders,
+                                   task.output, false);
+                }
+            },
+            m.affinity);
+    }
+
+    const std::vector<std::uint32_t>& items = m.tree.items();
+    const auto apply = [&](const TraversalOutput& out)
+    {
+        for (const Range& r : out.culled)
+            for (std::uint32_t i = r.first; i < r.first + r.count; ++i)
+                if (visible.test(items[i]))
+                    visible.clear(items[i]);
+        const Statistics& s = out.statistics;
+        m.statistics.nodesVisited += s.nodesVisited;
+        m.statistics.nodesInvisible += s.nodesInvisible;
+        m.statistics.nodesOutsideFrustum += s.nodesOutsideFrustum;
+        m.statistics.planeTests += s.planeTests;
+        m.statistics.cachedDecisions += s.cachedDecisions;
+    };
+    apply(m.serial);
+    if (parallel)
+        for (FrontierTask& task : m.frontier)
+            if (task.active)
+                apply(task.output);
+
+    if (m.debug)
+    {
+        m.debug->nodes = m.serial.debugNodes;
+        for (std::uint32_t o : m.active)
+            m.debug->activeOccluders.push_back(m.polygons[o].vertices);
+        m.debug->eyeCell = m.selector.leafBounds(m.selector.leafOf(m.eye));
+    }
+}
+} // namespace osgVis::core
