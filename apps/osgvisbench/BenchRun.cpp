@@ -106,7 +106,10 @@ BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& 
         renderModes(report, scene, walk, views, modes, options.supersample);
     if (options.sweeps())
     {
-        report.sweeps = runCullSweeps(model, scene.walk, modes, {options.speeds, options.threads, options.cube});
+        // note: the shared extraction keeps no triangles; object-space occluders are made of them
+        const osg::ref_ptr<ExtractedScene> withTriangles = extractScene(*scene.model);
+        report.sweeps =
+            runCullSweeps(withTriangles->scene, scene.walk, modes, {options.speeds, options.threads, options.cube});
         if (report.sweeps.points.empty())
             std::cerr << "osgvisbench: warning: no module-chain mode to sweep (osg, osg-oq and exact are not swept)"
                       << std::endl;

@@ -38,7 +38,7 @@ public:
 
     // Bounded so memory stays proportional to the tree, not to the frames walked. A frame may use
     // at most this many occluders (references returned in one frame stay valid).
-    static constexpr std::size_t MaxRelations = 32;
+    static constexpr std::size_t MaxRelations = 64;
 
 private:
     std::vector<OccluderRelation> _relations;

@@ -26,6 +26,14 @@ constexpr double DepthResolution = double(1u << 21);
 // 1280×1024 and 60° so rasterization rounding on the occluder's edges cannot reveal it.
 constexpr double AngularMargin = 1e-4;
 
+Aabb boundsOf(const OccluderPolygon& polygon)
+{
+    Aabb bounds;
+    for (const Vec3& v : polygon.vertices)
+        bounds.expand(v);
+    return bounds;
+}
+
 struct Range
 {
     std::uint32_t first, count;
@@ -81,8 +89,11 @@ struct OctreeModule::Impl
     Vec3 eye{0.0};
     const Frustum* frustum = nullptr;
     double nearDistance = 0.0;
-    std::vector<std::uint32_t> selected, active;
+    std::vector<std::uint32_t> active;
     std::vector<double> margins; // per polygon index, valid for `active` ones
+    std::vector<Aabb> polygonBounds;
+    std::vector<std::pair<double, std::uint32_t>> ranked;
+    double threshold = 0.0;
 
     void build(const Scene& scene, const OctreeOptions& options);
     void chooseFrontier(std::size_t wanted);
@@ -93,6 +104,7 @@ struct OctreeModule::Impl
     Occlusion testBox(BoxOcclusionCache& cache, const Aabb& box, const std::vector<std::uint32_t>& occluders, bool fuse,
                       std::vector<std::uint32_t>& partial, TraversalOutput& out);
     bool depthSeparated(const OccluderPolygon& polygon, const Aabb& box) const;
+    void chooseOccluders(const View& view, std::uint32_t k);
     bool fusedHidden(const Aabb& box, const std::vector<std::uint32_t>& partial, TraversalOutput& out);
 };
 
@@ -114,6 +126,10 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
     OccluderSelectorOptions selection;
     selection.threshold = options.areaAngleThreshold;
     selector.build(polygons, region, selection);
+    threshold = options.areaAngleThreshold;
+    polygonBounds.clear();
+    for (const OccluderPolygon& polygon : polygons)
+        polygonBounds.push_back(boundsOf(polygon));
 
     nodeCaches.assign(tree.nodes().size(), BoxOcclusionCache());
     objectCaches.assign(scene.objects.size(), BoxOcclusionCache());
@@ -206,6 +222,41 @@ bool OctreeModule::Impl::fusedHidden(const Aabb& box, const std::vector<std::uin
             return true;
     }
     return false;
+}
+
+// The k best potential occluders of the eye's cell by area-angle, among those the renderer draws
+// where they would hide something: inside the view frustum and wholly beyond the near plane (a
+// polygon cut by the near plane is clipped away exactly where it would hide things).
+void OctreeModule::Impl::chooseOccluders(const View& view, std::uint32_t k)
+{
+    const Plane& nearPlane = view.frustum.plane(Frustum::NEAR);
+    ranked.clear();
+    for (std::uint32_t o : selector.potentialOccluders(selector.leafOf(eye)))
+    {
+        const OccluderPolygon& polygon = polygons[o];
+        const double metric = areaAngle(polygon, eye);
+        if (metric < threshold || (ranked.size() == k && metric <= ranked.back().first))
+            continue;
+        const bool beyondNear = std::all_of(polygon.vertices.begin(), polygon.vertices.end(),
+                                            [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; });
+        if (!beyondNear || view.frustum.classify(polygonBounds[o]) == Containment::Outside)
+            continue;
+        // Insertion into the best-first list; ties keep the lower index first.
+        auto at = std::upper_bound(ranked.begin(), ranked.end(), std::make_pair(metric, o),
+                                   [](const auto& a, const auto& b)
+                                   { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+        ranked.insert(at, {metric, o});
+        if (ranked.size() > k)
+            ranked.pop_back();
+    }
+    for (const auto& [metric, o] : ranked)
+    {
+        double reach = 0.0;
+        for (const Vec3& v : polygons[o].vertices)
+            reach = std::max(reach, glm::length(v - eye));
+        margins[o] = 1e-6 * sceneSize + AngularMargin * reach;
+        active.push_back(o);
+    }
 }
 
 std::size_t OctreeModule::Impl::treeDepth() const
@@ -430,23 +481,7 @@ void OctreeModule::cull(const View& view, VisibleSet& visible)
     m.nearDistance = projection[3][2] / (projection[2][2] - 1.0);
     if (pointEye && m.nearDistance > 0.0 && std::isfinite(m.nearDistance) && !m.polygons.empty())
     {
-        m.selector.select(m.eye, _options.occluders, m.selected);
-        const Plane& nearPlane = view.frustum.plane(Frustum::NEAR);
-        for (std::uint32_t o : m.selected)
-        {
-            // note: a polygon reaching in front of the near plane is clipped away where it would
-            // hide things, so it may not occlude at all
-            const OccluderPolygon& polygon = m.polygons[o];
-            const bool beyondNear = std::all_of(polygon.vertices.begin(), polygon.vertices.end(),
-                                                [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; });
-            if (!beyondNear)
-                continue;
-            double reach = 0.0;
-            for (const Vec3& v : polygon.vertices)
-                reach = std::max(reach, glm::length(v - m.eye));
-            m.margins[o] = 1e-6 * m.sceneSize + AngularMargin * reach;
-            m.active.push_back(o);
-        }
+        m.chooseOccluders(view, _options.occluders);
     }
     m.statistics.activeOccluders = static_cast<std::uint32_t>(m.active.size());
 

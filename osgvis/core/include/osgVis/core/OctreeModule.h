@@ -19,8 +19,8 @@ namespace osgVis::core
 {
 struct OctreeOptions
 {
-    std::uint32_t occluders = 16;        // k: actual occluders per frame
-    double areaAngleThreshold = 0.01;    // potential-occluder threshold
+    std::uint32_t occluders = 32;        // k: actual occluders per frame
+    double areaAngleThreshold = 0.002;    // potential-occluder threshold
     bool fuseConnected = true;           // false: "octree-single"
     bool temporalCoherence = true;
     std::uint32_t maxLeafObjects = 4;
