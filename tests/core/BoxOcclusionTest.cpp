@@ -1,6 +1,8 @@
 // Box-vs-occluder planes (Coorg & Teller): exact classifications of hand-made configurations,
 // degenerate occluders, the silhouette-corner table against brute force, connected occluders,
 // and a randomized cross-check against an independent segment-polygon test.
+#include "AllocationCounter.h"
+
 #include <osgVis/core/BoxOcclusion.h>
 
 #include <algorithm>
@@ -12,34 +14,6 @@
 #include <limits>
 #include <new>
 #include <random>
-
-namespace
-{
-std::atomic<std::size_t> allocations{0};
-}
-
-// Counts allocations, to show that classify and fusedInvisible make none. GCC pairs the inlined
-// malloc-based operator new with free and warns although the pair matches.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size)
-{
-    ++allocations;
-    if (void* p = std::malloc(size ? size : 1))
-        return p;
-    throw std::bad_alloc();
-}
-
-void operator delete(void* p) noexcept
-{
-    std::free(p);
-}
-
-void operator delete(void* p, std::size_t) noexcept
-{
-    std::free(p);
-}
-#pragma GCC diagnostic pop
 
 using namespace osgVis::core;
 
@@ -830,7 +804,7 @@ TEST(BoxOcclusion, ClassifyAndFusedAllocateNothing)
     const std::vector<BoxOccluderPlanes> planes = planesFor(polygons, active, box);
     BoxOccluderPlanes reused = planes[0];
     int invisible = 0, fusedCount = 0;
-    const std::size_t before = allocations.load();
+    const std::size_t before = osgVis::test::allocationCount();
     for (int k = 0; k < 1000; ++k)
     {
         const Vec3 eye(0.001 * k, -0.002 * k, 10.0 - 0.01 * k);
@@ -838,7 +812,7 @@ TEST(BoxOcclusion, ClassifyAndFusedAllocateNothing)
         fusedCount += fusedInvisible(polygons, active, planes, eye, Margin);
         computePlanes(polygons[1], box, reused); // reuses the vectors' capacity
     }
-    EXPECT_EQ(allocations.load() - before, 0u);
+    EXPECT_EQ(osgVis::test::allocationCount() - before, 0u);
     EXPECT_GT(fusedCount, 0);
     EXPECT_GT(invisible, 0); // low eyes far off-centre see the box through triangle 0 alone
 }

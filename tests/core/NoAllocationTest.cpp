@@ -1,4 +1,6 @@
 // The query phase allocates nothing after warm-up: a replaced global operator new counts.
+#include "AllocationCounter.h"
+
 #include <osgVis/core/FrustumModule.h>
 #include <osgVis/core/ModuleRegistry.h>
 
@@ -7,29 +9,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 #include <new>
-
-namespace
-{
-std::atomic<std::size_t> allocations{0};
-}
-
-void* operator new(std::size_t size)
-{
-    ++allocations;
-    if (void* p = std::malloc(size ? size : 1))
-        return p;
-    throw std::bad_alloc();
-}
-
-void operator delete(void* p) noexcept
-{
-    std::free(p);
-}
-
-void operator delete(void* p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 using namespace osgVis::core;
 
@@ -49,10 +28,10 @@ TEST(FrustumModule, NoAllocationAfterWarmUp)
     for (const View& v : views)
         chain.cull(v, visible); // warm-up
 
-    const std::size_t before = allocations.load();
+    const std::size_t before = osgVis::test::allocationCount();
     for (const View& v : views)
         chain.cull(v, visible);
-    EXPECT_EQ(allocations.load() - before, 0u);
+    EXPECT_EQ(osgVis::test::allocationCount() - before, 0u);
     EXPECT_GT(visible.count(), 0u);
     EXPECT_LT(visible.count(), scene.objects.size());
 }

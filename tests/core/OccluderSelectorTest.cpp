@@ -1,5 +1,7 @@
 // Area-angle metric, the octree of potential occluders (never missing one that reaches the
 // threshold inside its leaf), and the per-frame choice of the k best.
+#include "AllocationCounter.h"
+
 #include <osgVis/core/OccluderSelector.h>
 
 #include <algorithm>
@@ -9,34 +11,6 @@
 #include <new>
 #include <random>
 #include <thread>
-
-namespace
-{
-std::atomic<std::size_t> allocations{0};
-}
-
-// Counts allocations so select() can be shown to make none. GCC sees the std::free below paired
-// with inlined `new` expressions and warns, though the pair is malloc/free throughout.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void* operator new(std::size_t size)
-{
-    ++allocations;
-    if (void* p = std::malloc(size ? size : 1))
-        return p;
-    throw std::bad_alloc();
-}
-
-void operator delete(void* p) noexcept
-{
-    std::free(p);
-}
-
-void operator delete(void* p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 using namespace osgVis::core;
 
@@ -303,14 +277,14 @@ TEST(OccluderSelector, SelectAllocatesNothingOnceOutHasCapacity)
     out.reserve(200); // beyond the metrics select keeps on its stack
     std::mt19937 rng(2);
     std::uniform_real_distribution<double> coordinate(-35, 35);
-    const std::size_t before = allocations.load();
+    const std::size_t before = osgVis::test::allocationCount();
     std::size_t chosen = 0;
     for (int i = 0; i < 200; ++i)
     {
         selector.select(Vec3(coordinate(rng), coordinate(rng), coordinate(rng)), i % 2 ? 8u : 200u, out);
         chosen += out.size();
     }
-    EXPECT_EQ(allocations.load(), before);
+    EXPECT_EQ(osgVis::test::allocationCount(), before);
     EXPECT_GT(chosen, 0u);
 }
 

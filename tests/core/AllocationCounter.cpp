@@ -1,0 +1,41 @@
+#include "AllocationCounter.h"
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace
+{
+std::atomic<std::size_t> allocations{0};
+}
+
+namespace osgVis::test
+{
+std::size_t allocationCount()
+{
+    return allocations.load();
+}
+} // namespace osgVis::test
+
+// note: GCC pairs inlined new expressions with the std::free below and warns, though the pair is
+// malloc/free throughout
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+void* operator new(std::size_t size)
+{
+    ++allocations;
+    if (void* p = std::malloc(size ? size : 1))
+        return p;
+    throw std::bad_alloc();
+}
+
+void operator delete(void* p) noexcept
+{
+    std::free(p);
+}
+
+void operator delete(void* p, std::size_t) noexcept
+{
+    std::free(p);
+}
