@@ -119,6 +119,14 @@ void DebugMap::buildGeometry()
     _camera->addChild(geode.get());
 }
 
+osg::ref_ptr<osg::Group> DebugMap::sceneWithMap(const CullingModes& modes) const
+{
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(modes.node());
+    root->addChild(_camera.get());
+    return root;
+}
+
 void DebugMap::followMode()
 {
     VisibilityGroup* group = _modes.visibilityGroup();

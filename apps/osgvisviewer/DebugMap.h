@@ -30,6 +30,8 @@ public:
 
     // Add this to the scene root, outside the culled model.
     osg::Camera* camera() const { return _camera.get(); }
+    // The viewer's scene: the culled model of `modes` beside this map's camera.
+    osg::ref_ptr<osg::Group> sceneWithMap(const CullingModes& modes) const;
     // The camera whose view the map explains (its view, projection and viewport are read each frame).
     void setObservedCamera(osg::Camera* camera) { _observed = camera; }
     void setEnabled(bool enabled);

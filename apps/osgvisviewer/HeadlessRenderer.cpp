@@ -96,9 +96,7 @@ int renderHeadless(const ViewerScene& scene, const ViewerOptions& options)
 
     CullingModes modes(scene.model.get(), options.mode);
     DebugMap map(*scene.objects, modes);
-    osg::ref_ptr<osg::Group> root = new osg::Group;
-    root->addChild(modes.node());
-    root->addChild(map.camera());
+    osg::ref_ptr<osg::Group> root = map.sceneWithMap(modes);
 
     osgViewer::Viewer viewer;
     // note: one thread keeps capture and statistics in step with the frame just drawn.

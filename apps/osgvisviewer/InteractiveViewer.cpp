@@ -73,9 +73,7 @@ int runInteractive(const ViewerScene& scene, const ViewerOptions& options)
 
     CullingModes modes(scene.model.get(), options.mode);
     DebugMap map(*scene.objects, modes);
-    osg::ref_ptr<osg::Group> root = new osg::Group;
-    root->addChild(modes.node());
-    root->addChild(map.camera());
+    osg::ref_ptr<osg::Group> root = map.sceneWithMap(modes);
 
     osgViewer::Viewer viewer;
     viewer.setSceneData(root.get());

@@ -57,9 +57,7 @@ RenderedMap renderMap(const std::string& mode)
     osg::ref_ptr<ExtractedScene> objects = extractScene(*model);
     viewer::CullingModes modes(model.get(), mode);
     viewer::DebugMap map(*objects, modes);
-    osg::ref_ptr<osg::Group> root = new osg::Group;
-    root->addChild(modes.node());
-    root->addChild(map.camera());
+    osg::ref_ptr<osg::Group> root = map.sceneWithMap(modes);
 
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
