@@ -6,6 +6,7 @@
 // with an affinity partitioner, so a subtree tends to stay on the thread that has its caches.
 #include <osgVis/core/OctreeModule.h>
 
+#include "CoplanarUnion.h"
 #include "OcclusionCache.h"
 
 #include <tbb/parallel_for.h>
@@ -121,6 +122,9 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
     if (region.empty() || !region.finite())
         region = Aabb(Vec3(-1.0), Vec3(1.0));
     sceneSize = std::max(glm::length(region.extent()), 1e-9);
+    if (options.coplanarUnions)
+        for (OccluderPolygon& joined : coplanarUnions(polygons, sceneSize))
+            polygons.push_back(std::move(joined));
     const Vec3 grow(0.05 * sceneSize);
     region = Aabb(region.min - grow, region.max + grow);
     OccluderSelectorOptions selection;

@@ -19,10 +19,11 @@ namespace osgVis::core
 {
 struct OctreeOptions
 {
-    std::uint32_t occluders = 32;        // k: actual occluders per frame
-    double areaAngleThreshold = 0.002;    // potential-occluder threshold
-    bool fuseConnected = true;           // false: "octree-single"
+    std::uint32_t occluders = 32;      // k: actual occluders per frame
+    double areaAngleThreshold = 0.002; // potential-occluder threshold
+    bool fuseConnected = true;         // false: "octree-single"
     bool temporalCoherence = true;
+    bool coplanarUnions = true; // coplanar pieces of different objects as one occluder
     std::uint32_t maxLeafObjects = 4;
     std::uint32_t parallelMinObjects = 256; // subtrees smaller than this run on the calling thread
     OccluderBuildOptions occluderBuild;
