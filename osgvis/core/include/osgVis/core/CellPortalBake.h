@@ -19,7 +19,8 @@ struct BakeOptions
     unsigned threads = 0;
 };
 
-// Called from the baking thread with the number of source cells done so far and the total.
+// Called with the number of source cells done so far and the total, from worker threads but never
+// two calls at once.
 using BakeProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options = {}, const BakeProgress& progress = {});
