@@ -71,7 +71,7 @@ TEST(GenApp, HelpAndListTellTheTruth)
         EXPECT_NE(help.output.find(option), std::string::npos) << option;
     const AppRun list = osgvisgen("--list");
     EXPECT_EQ(list.exitCode, 0);
-    for (const char* name : {"office", "city", "tetra", "thin-slit", "moving-occluder"})
+    for (const char* name : {"office", "city", "tetra", "floor", "thin-slit", "moving-occluder"})
         EXPECT_NE(list.output.find(name), std::string::npos) << name;
 }
 
@@ -97,5 +97,20 @@ TEST(GenApp, WritesTheSceneAndItsWalkAndSaysSo)
     const AppRun adversarial = osgvisgen("--adversarial thin-slit -o " + (dir / "slit.osgb").string());
     ASSERT_EQ(adversarial.exitCode, 0) << adversarial.output;
     EXPECT_TRUE(std::filesystem::exists(dir / "slit.walk"));
+    std::filesystem::remove_all(dir);
+}
+
+TEST(GenApp, FloorDefaultsToThreeHundredThousandTriangles)
+{
+    const auto dir = scratchDir();
+    const std::string scene = (dir / "floor.osgb").string();
+    const AppRun run = osgvisgen("--kind floor -o " + scene);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    osg::ref_ptr<osg::Node> loaded = osgDB::readRefNodeFile(scene);
+    ASSERT_TRUE(loaded.valid());
+    const osgVis::gen::SceneStats stats = osgVis::gen::sceneStats(*loaded);
+    EXPECT_NEAR(double(stats.triangles), 300000.0, 30000.0);
+    EXPECT_NE(run.output.find(std::to_string(stats.objects) + " objects"), std::string::npos) << run.output;
+    expectFailure("--kind floor --triangles 59999 -o " + scene, "outside [60000, 50000000] for floor");
     std::filesystem::remove_all(dir);
 }

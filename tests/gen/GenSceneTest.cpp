@@ -57,6 +57,7 @@ const char* solidName(gen::SceneKind kind)
     switch (kind)
     {
     case gen::SceneKind::Office:
+    case gen::SceneKind::Floor:
         return "wall";
     case gen::SceneKind::City:
         return "building";

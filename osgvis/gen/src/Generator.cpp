@@ -16,7 +16,7 @@ struct KindName
     const char* name;
 };
 constexpr KindName kindNames[] = {
-    {SceneKind::Office, "office"}, {SceneKind::City, "city"}, {SceneKind::Tetra, "tetra"}};
+    {SceneKind::Office, "office"}, {SceneKind::City, "city"}, {SceneKind::Tetra, "tetra"}, {SceneKind::Floor, "floor"}};
 
 // Under a plain headlight, floors and ceilings seen edge-on get no diffuse light and draw black; a
 // global ambient term keeps every surface readable in screenshots, and two-sided lighting lights
@@ -37,11 +37,25 @@ GeneratedScene mesh(SceneModel scene, double density)
 }
 } // namespace
 
+std::uint64_t defaultTriangles(SceneKind kind)
+{
+    return kind == SceneKind::Floor ? 300000 : GenerateOptions{}.triangles;
+}
+
+std::uint64_t minTrianglesFor(SceneKind kind)
+{
+    // The floor's layout is the same for every seed up to doors and furniture; its coarsest meshing
+    // has about 57 000 triangles, so budgets below this could not land within 10 %.
+    return kind == SceneKind::Floor ? 60000 : minTriangles;
+}
+
 GeneratedScene generate(const GenerateOptions& options)
 {
-    if (options.triangles < minTriangles || options.triangles > maxTriangles)
+    const std::uint64_t lowest = minTrianglesFor(options.kind);
+    if (options.triangles < lowest || options.triangles > maxTriangles)
         throw std::invalid_argument("triangle budget " + std::to_string(options.triangles) + " is outside [" +
-                                    std::to_string(minTriangles) + ", " + std::to_string(maxTriangles) + "]");
+                                    std::to_string(lowest) + ", " + std::to_string(maxTriangles) + "] for " +
+                                    sceneKindName(options.kind));
     SceneModel scene;
     switch (options.kind)
     {
@@ -54,6 +68,9 @@ GeneratedScene generate(const GenerateOptions& options)
     case SceneKind::Tetra:
         scene = tetraModel(options.triangles, options.seed);
         break;
+    case SceneKind::Floor:
+        scene = floorModel(options.seed);
+        break;
     }
     const double density = calibrateDensity(scene.model, options.triangles);
     return mesh(std::move(scene), density);
@@ -64,7 +81,7 @@ SceneKind parseSceneKind(const std::string& name)
     for (const KindName& k : kindNames)
         if (name == k.name)
             return k.kind;
-    throw std::invalid_argument("unknown scene kind '" + name + "' (known: office, city, tetra)");
+    throw std::invalid_argument("unknown scene kind '" + name + "' (known: office, city, tetra, floor)");
 }
 
 const char* sceneKindName(SceneKind kind)

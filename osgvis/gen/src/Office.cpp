@@ -19,7 +19,8 @@
 //
 // Every room has a door to its corridor; side walls get doors to the neighbour (or the cross
 // corridor) at random. Walls are centred on the grid lines; walls along x own the corners so no two
-// boxes overlap. The walk stays on the ground storey.
+// boxes overlap. The walk stays on the ground storey; the floor preset (one storey, fixed room count)
+// walks its corridors only.
 #include "Palette.h"
 #include "Scenes.h"
 #include "Shapes.h"
@@ -56,19 +57,29 @@ struct Layout
     double sizeY() const { return wings * wingDepth; }
 };
 
-// About 300 triangles of walls and furniture per room at the coarsest meshing; rooms grow as
-// triangles^0.7 so larger budgets get both more rooms and finer walls.
-Layout layoutFor(std::uint64_t triangles)
+// Wings and columns for one storey of about `perStorey` rooms. A wing is about three times as long
+// as it is deep: roughly square storeys.
+Layout storeyLayout(int storeys, double perStorey)
 {
-    const auto rooms = std::max<std::size_t>(2, std::size_t(std::llround(std::pow(double(triangles), 0.7) / 80.0)));
     Layout layout;
-    layout.storeys = int((rooms + maxRoomsPerStorey - 1) / maxRoomsPerStorey);
-    const double perStorey = std::ceil(double(rooms) / layout.storeys);
-    // A wing is about three times as long as it is deep: roughly square storeys.
+    layout.storeys = storeys;
     layout.wings = std::max(1, int(std::lround(std::sqrt(perStorey / 6.0))));
     layout.columns = std::max(1, int(std::ceil(perStorey / (2.0 * layout.wings))));
     return layout;
 }
+
+// About 300 triangles of walls and furniture per room at the coarsest meshing; rooms grow as
+// triangles^0.7 so larger budgets get both more rooms and finer walls.
+Layout officeLayout(std::uint64_t triangles)
+{
+    const auto rooms = std::max<std::size_t>(2, std::size_t(std::llround(std::pow(double(triangles), 0.7) / 80.0)));
+    const int storeys = int((rooms + maxRoomsPerStorey - 1) / maxRoomsPerStorey);
+    return storeyLayout(storeys, std::ceil(double(rooms) / storeys));
+}
+
+// The floor preset: one storey whose room count is fixed so that it has about 2 300 objects, like
+// Teller–Séquin's office floor (Soda Hall), whatever the triangle budget.
+constexpr double floorRooms = 204.0;
 
 // A door of a ground-storey room onto its corridor, for the walk.
 struct CorridorDoor
@@ -79,10 +90,17 @@ struct CorridorDoor
     double roomCentreX;
 };
 
+enum class Route
+{
+    ThroughRooms,  // office: corridors with detours into some rooms
+    CorridorsOnly  // floor: wing and cross corridors only
+};
+
 class OfficeBuilder
 {
 public:
-    OfficeBuilder(const Layout& layout, std::uint32_t seed) : _layout(layout), _rng(seed)
+    OfficeBuilder(const Layout& layout, Route routeKind, std::uint32_t seed)
+        : _layout(layout), _routeKind(routeKind), _rng(seed)
     {
         _desk = _model.addMesh(deskMesh(palette::desk));
         _chairs[0] = _model.addMesh(chairMesh(palette::chair));
@@ -259,8 +277,8 @@ private:
         storey.add(std::move(geode));
     }
 
-    // Along each ground-storey wing corridor in turn (east, then west, …), into some of its rooms:
-    // straight through every door, a loop in the room's free half, and out again.
+    // Along each ground-storey wing corridor in turn (east, then west, …), into some of its rooms
+    // (Route::ThroughRooms): straight through every door, a loop in the room's free half, and out again.
     std::vector<osg::Vec3d> route()
     {
         const double crossWest = 0.5 * corridorWidth, crossEast = _layout.sizeX() - 0.5 * corridorWidth;
@@ -275,7 +293,8 @@ private:
             std::sort(doors.begin(), doors.end(),
                       [&](const CorridorDoor& a, const CorridorDoor& b) { return eastward ? a.x < b.x : a.x > b.x; });
             bool visited = false;
-            for (std::size_t i = 0; i < doors.size(); ++i)
+            // Corridor-only routes draw no random numbers here, so their rooms match the office's rules.
+            for (std::size_t i = 0; _routeKind == Route::ThroughRooms && i < doors.size(); ++i)
             {
                 // Always enter at least one room of the first corridor.
                 if (!_rng.chance(0.5) && (visited || k > 0 || i + 1 < doors.size()))
@@ -307,6 +326,7 @@ private:
     }
 
     Layout _layout;
+    Route _routeKind;
     Random _rng;
     Model _model;
     MeshId _desk = 0, _chairs[2] = {0, 0}, _shelf = 0;
@@ -316,6 +336,11 @@ private:
 
 SceneModel officeModel(std::uint64_t triangles, std::uint32_t seed)
 {
-    return OfficeBuilder(layoutFor(triangles), seed).build();
+    return OfficeBuilder(officeLayout(triangles), Route::ThroughRooms, seed).build();
+}
+
+SceneModel floorModel(std::uint32_t seed)
+{
+    return OfficeBuilder(storeyLayout(1, floorRooms), Route::CorridorsOnly, seed).build();
 }
 } // namespace osgVis::gen

@@ -18,6 +18,8 @@ struct SceneModel
 // Each lays out a scene whose coarsest meshing stays well below `triangles`, so that calibrating the
 // tessellation density can reach the budget.
 SceneModel officeModel(std::uint64_t triangles, std::uint32_t seed);
+// One storey of the office with a fixed room count: its layout does not depend on the budget.
+SceneModel floorModel(std::uint32_t seed);
 SceneModel cityModel(std::uint64_t triangles, std::uint32_t seed);
 SceneModel tetraModel(std::uint64_t triangles, std::uint32_t seed);
 

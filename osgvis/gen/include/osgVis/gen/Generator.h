@@ -18,7 +18,8 @@ enum class SceneKind
 {
     Office, // furnished office floors: rooms, corridors, doors (cell-portal paper)
     City,   // street grid with blocks of tall buildings (occlusion-mask paper)
-    Tetra   // randomly sized and oriented tetrahedra scattered on a plane (octree paper)
+    Tetra,  // randomly sized and oriented tetrahedra scattered on a plane (octree paper)
+    Floor   // one office storey of fixed size, ~2 300 objects, corridor walk (cell-portal paper's floor)
 };
 
 struct GenerateOptions
@@ -34,13 +35,20 @@ struct GeneratedScene
     core::Walk walk;               // one fixed projection whose far plane contains the whole scene
 };
 
-// Throws std::invalid_argument for a triangle budget outside [minTriangles, maxTriangles].
+// Throws std::invalid_argument for a triangle budget outside [minTriangles, maxTriangles], or below
+// minTrianglesFor(kind).
 GeneratedScene generate(const GenerateOptions& options);
 
 constexpr std::uint64_t minTriangles = 1000;
 constexpr std::uint64_t maxTriangles = 50000000;
 
-// "office" | "city" | "tetra"; throws std::invalid_argument naming the known kinds.
+// The budget osgvisgen uses when none is given: 300 000 for Floor (the paper's floor has ~250k
+// polygons), otherwise 100 000 (GenerateOptions' default).
+std::uint64_t defaultTriangles(SceneKind kind);
+// Smallest budget the kind can meet: Floor's fixed layout has a fixed coarsest meshing.
+std::uint64_t minTrianglesFor(SceneKind kind);
+
+// "office" | "city" | "tetra" | "floor"; throws std::invalid_argument naming the known kinds.
 SceneKind parseSceneKind(const std::string& name);
 const char* sceneKindName(SceneKind kind);
 std::vector<std::string> sceneKindNames();
