@@ -37,5 +37,15 @@ struct OpaqueFace
 std::vector<OpaqueFace> findOpaqueAxialFaces(const Scene& scene);
 
 // Automatic subdivision of `scene` (or its stated cells/portals when Scene::cells is not empty).
+// Automatic: the root box is the scene's finite bounds grown by 1e-3 of their diagonal (plus a
+// little), split breadth first at the best-covered opaque axial plane (ties: larger area, smaller
+// axis, smaller coordinate); cells are the kd leaves in depth-first order; portals are every shared
+// face minus the opaque faces in its plane (only gaps thinner than ~1e-7 of the diagonal dropped).
+// A scene with nothing of finite bounds gives no cells; one with no opaque axial faces one cell.
+// Stated: cells in Scene::cells order with their names; a portal polygon becomes its bounding
+// rectangle on the face its cells share that is nearest to it (clipped to that face, or the whole
+// face if the clip is empty); cells sharing no face get the polygon's bounding rectangle flattened
+// onto the plane through its centre across its dominant normal axis (low cell: smaller centre on
+// that axis). Portals naming one cell twice or a cell out of range are ignored.
 CellGraph subdivideCells(const Scene& scene, const SubdivisionOptions& options = {});
 } // namespace osgVis::core
