@@ -1,1 +1,189 @@
+// Deterministic mutation fuzzing of a valid .pvs file: every mutant either decodes to consistent
+// data or throws PvsFormatError; anything else (another exception, a crash, a sanitizer report)
+// fails. Most mutants get their body size and CRC-32 repaired so they reach the parser.
+#include "PvsSample.h"
+
 #include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+
+using namespace osgVis::core;
+
+namespace
+{
+constexpr const char* SectionTags[] = {"HEAD", "BNDS", "CELL", "NAME", "KDTR", "PORT", "CPRT", "SRCS", "STAT"};
+
+class Mutator
+{
+public:
+    explicit Mutator(const std::vector<std::uint8_t>& valid) : _valid(valid) {}
+
+    std::vector<std::uint8_t> mutate(std::mt19937& random) const
+    {
+        std::vector<std::uint8_t> bytes = _valid;
+        const int steps = 1 + int(random() % 3);
+        for (int s = 0; s < steps && !bytes.empty(); ++s)
+            mutateOnce(bytes, random);
+        return bytes;
+    }
+
+private:
+    static std::size_t pick(std::mt19937& random, std::size_t size) { return size ? random() % size : 0; }
+
+    // A u32 count placed where a count is (start of a section body, or a node count of a source).
+    void overwriteCount(std::vector<std::uint8_t>& bytes, std::mt19937& random) const
+    {
+        static const std::uint32_t values[] = {0, 1, 2, 3, 4, 5, 36, 37, 38, 255, 0x10000, 0x7FFFFFFF, 0xFFFFFFFE,
+                                               0xFFFFFFFF};
+        const std::size_t body = osgVis::test::sectionBody(bytes, SectionTags[pick(random, 9)]);
+        if (body == std::string::npos || body + 4 > bytes.size())
+            return;
+        // Half the time the count field itself, otherwise any aligned u32 in the first 64 bytes.
+        const std::size_t at = (random() & 1) ? body : body + 4 * pick(random, 16);
+        if (at + 4 <= bytes.size())
+            osgVis::test::putU32(bytes, at, values[pick(random, std::size(values))]);
+    }
+
+    void mutateOnce(std::vector<std::uint8_t>& bytes, std::mt19937& random) const
+    {
+        switch (random() % 7)
+        {
+        case 0: // bit flip
+            bytes[pick(random, bytes.size())] ^= std::uint8_t(1u << (random() % 8));
+            break;
+        case 1: // byte set to an interesting or random value
+        {
+            static const std::uint8_t values[] = {0x00, 0x01, 0x7F, 0x80, 0xFF, 0xFE, 0x03};
+            bytes[pick(random, bytes.size())] = (random() & 1) ? values[pick(random, 7)] : std::uint8_t(random());
+            break;
+        }
+        case 2: // insertion of 1..8 random bytes
+        {
+            const std::size_t at = pick(random, bytes.size() + 1);
+            const std::size_t n = 1 + random() % 8;
+            for (std::size_t i = 0; i < n; ++i)
+                bytes.insert(bytes.begin() + static_cast<std::ptrdiff_t>(at), std::uint8_t(random()));
+            break;
+        }
+        case 3: // deletion of 1..16 bytes
+        {
+            const std::size_t at = pick(random, bytes.size());
+            const std::size_t n = std::min<std::size_t>(1 + random() % 16, bytes.size() - at);
+            bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(at),
+                        bytes.begin() + static_cast<std::ptrdiff_t>(at + n));
+            break;
+        }
+        case 4: // splice: a range of the valid file copied over another place
+        {
+            const std::size_t from = pick(random, _valid.size());
+            const std::size_t to = pick(random, bytes.size());
+            const std::size_t n = std::min({std::size_t(1 + random() % 32), _valid.size() - from, bytes.size() - to});
+            std::copy_n(_valid.begin() + static_cast<std::ptrdiff_t>(from), n,
+                        bytes.begin() + static_cast<std::ptrdiff_t>(to));
+            break;
+        }
+        case 5:
+            overwriteCount(bytes, random);
+            break;
+        default: // a section length rewritten
+        {
+            const std::size_t body = osgVis::test::sectionBody(bytes, SectionTags[pick(random, 9)]);
+            if (body != std::string::npos && body >= 8)
+            {
+                static const std::uint64_t values[] = {0, 1, 3, 7, 100, 0xFFFFFFFFull, ~std::uint64_t(0)};
+                osgVis::test::putU64(bytes, body - 8, values[pick(random, std::size(values))]);
+            }
+            break;
+        }
+        }
+    }
+
+    const std::vector<std::uint8_t>& _valid;
+};
+
+// Everything a consumer indexes with must be in range (the decoder promises it).
+void expectConsistent(const PvsFile& file)
+{
+    const CellPortalData& d = file.data;
+    const CellGraph& g = d.graph;
+    const std::size_t cells = g.cells.size();
+    ASSERT_EQ(d.sources.size(), cells);
+    ASSERT_EQ(g.cellPortals.size(), cells);
+    ASSERT_TRUE(g.cellNames.empty() || g.cellNames.size() == cells);
+    for (const CellPortal& p : g.portals)
+        ASSERT_TRUE(p.lowCell < cells && p.highCell < cells && p.rect.axis < 3);
+    for (std::size_t c = 0; c < cells; ++c)
+        for (std::uint32_t p : g.cellPortals[c])
+            ASSERT_LT(p, g.portals.size());
+    for (std::size_t n = 0; n < g.nodes.size(); ++n)
+    {
+        const CellGraph::KdNode& node = g.nodes[n];
+        if (node.axis == 3)
+            ASSERT_LT(node.children[0], cells);
+        else
+            ASSERT_TRUE(node.children[0] > n && node.children[1] > n && node.children[0] < g.nodes.size() &&
+                        node.children[1] < g.nodes.size());
+    }
+    for (const SourceCellVisibility& s : d.sources)
+    {
+        ASSERT_EQ(s.cellToCell.capacity(), cells);
+        ASSERT_EQ(s.cellToObject.capacity(), d.objectCount);
+        for (std::size_t i = 0; i < s.stabTree.size(); ++i)
+        {
+            const StabNode& node = s.stabTree[i];
+            ASSERT_TRUE(node.portal < g.portals.size() && node.cell < cells);
+            ASSERT_TRUE(node.subtreeEnd > i && node.subtreeEnd <= s.stabTree.size());
+            ASSERT_TRUE(node.parent == NoStabParent || node.parent < i);
+        }
+    }
+}
+} // namespace
+
+TEST(PvsFuzz, MutantsDecodeConsistentlyOrThrowPvsFormatError)
+{
+    const std::vector<std::uint8_t> valid = encodePvs(osgVis::test::makeSamplePvs());
+    const Mutator mutator(valid);
+    std::mt19937 random(20261123);
+    const int cases = 40000;
+    int decoded = 0, checksumErrors = 0;
+    std::map<std::string, int> errorsBySection; // "while reading <part>" of each message
+    for (int n = 0; n < cases; ++n)
+    {
+        std::vector<std::uint8_t> bytes = mutator.mutate(random);
+        if (random() % 10 != 0)
+            osgVis::test::fixFraming(bytes);
+        try
+        {
+            const PvsFile file = decodePvs(bytes.data(), bytes.size());
+            ++decoded;
+            expectConsistent(file);
+            // note: each content has one spelling, so an accepted mutant is exactly what its content encodes to.
+            ASSERT_EQ(encodePvs(file), bytes) << "case " << n;
+        }
+        catch (const PvsFormatError& e)
+        {
+            const std::string message = e.what();
+            if (message.rfind("checksum mismatch", 0) == 0)
+                ++checksumErrors;
+            const std::size_t at = message.find("while reading ");
+            if (at != std::string::npos)
+                ++errorsBySection[message.substr(at + 14, message.find(" (", at) - at - 14)];
+        }
+        catch (const std::exception& e)
+        {
+            FAIL() << "case " << n << " threw a " << typeid(e).name() << ": " << e.what();
+        }
+        if (HasFatalFailure())
+            return;
+    }
+    // The repaired framing lets most mutants past the checksum into every part of the parser.
+    EXPECT_LT(checksumErrors, cases / 5);
+    for (const char* part : {"model header", "graph bounds", "cells", "cell names", "kd nodes", "portals",
+                             "cell portal lists", "source cells", "bake statistics"})
+        EXPECT_GT(errorsBySection[part], 20) << part;
+    EXPECT_GT(decoded, 0); // mutants that keep a consistent file (e.g. another double) do decode
+    std::cout << cases << " mutants: " << decoded << " decoded, " << checksumErrors << " checksum errors\n";
+    for (const auto& [part, count] : errorsBySection)
+        std::cout << "  " << count << " errors while reading " << part << "\n";
+}
