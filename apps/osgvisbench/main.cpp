@@ -8,6 +8,8 @@
 #include "ReportJson.h"
 #include "ReportTable.h"
 
+#include "../osgvisviewer/SceneSource.h"
+
 #include <exception>
 #include <iostream>
 
@@ -49,6 +51,7 @@ int reportNondeterminism(const BenchReport& report)
 
 int main(int argc, char** argv)
 {
+    osgVis::viewer::addOsgVisPluginPaths(); // .pvs scenes load from the build tree and after install
     BenchOptions options;
     std::vector<BenchMode> modes;
     try

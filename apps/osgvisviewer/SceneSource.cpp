@@ -2,11 +2,16 @@
 
 #include "AutoWalk.h"
 
+#include <osgVis/VisibilityGroup>
+#include <osgVis/core/PvsFormat.h>
 #include <osgVis/gen/Generator.h>
 
 #include <osgDB/ReadFile>
+#include <osgDB/Registry>
 
+#include <algorithm>
 #include <filesystem>
+#include <iostream>
 
 namespace osgVis::viewer
 {
@@ -43,7 +48,111 @@ std::string walkBeside(const std::string& scenePath)
     std::error_code error;
     return std::filesystem::is_regular_file(candidate, error) ? candidate.string() : std::string();
 }
+
+bool isPvsPath(const std::string& path)
+{
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    return extension == ".pvs";
+}
+
+// The plugin's verdict on the baked data, from the group's descriptions.
+std::string trustLine(const osg::Node& group)
+{
+    const std::string trusted = "osgVis:pvs-trusted", untrusted = "osgVis:pvs-untrusted";
+    for (const std::string& description : group.getDescriptions())
+    {
+        if (description.compare(0, untrusted.size(), untrusted) == 0)
+        {
+            std::string reason = description.substr(untrusted.size());
+            reason.erase(0, reason.find_first_not_of(": "));
+            return "untrusted: " + reason;
+        }
+        if (description.compare(0, trusted.size(), trusted) == 0)
+            return "trusted";
+    }
+    return "untrusted: the .pvs plugin gave no verdict";
+}
+
+// The walk of a .pvs scene: beside the .pvs (its stem), else beside the model it names.
+std::string walkForPvs(const std::string& pvsPath)
+{
+    const std::string besidePvs = walkBeside(pvsPath);
+    if (!besidePvs.empty())
+        return besidePvs;
+    try
+    {
+        const std::filesystem::path modelPath(core::readPvsFile(pvsPath).modelPath);
+        const std::filesystem::path model =
+            modelPath.is_absolute() ? modelPath : std::filesystem::path(pvsPath).parent_path() / modelPath;
+        return walkBeside(model.string());
+    }
+    catch (const core::PvsFormatError&)
+    {
+        return ""; // the plugin already said why the file is not trusted
+    }
+}
+
+// A .pvs file read through the osgdb_pvs plugin: the model it names, unwrapped from the plugin's
+// cellportal VisibilityGroup so that the caller's own modes wrap it; the baked data stay registered
+// for any cellportal module given this model.
+osg::ref_ptr<osg::Node> readPvsScene(const std::string& path)
+{
+    std::error_code error;
+    if (!std::filesystem::exists(path, error))
+        throw SceneError("cannot read scene '" + path + "': no such file");
+    osgDB::Registry* registry = osgDB::Registry::instance();
+    osgDB::ReaderWriter::ReadResult result = registry->readNode(path, registry->getOptions());
+    osg::ref_ptr<osg::Node> node = result.getNode();
+    if (!node)
+    {
+        const std::string why = result.message().empty() ? "the osgdb_pvs plugin was not found or could not load it"
+                                                         : result.message();
+        throw SceneError("cannot read scene '" + path + "': " + why);
+    }
+    auto* group = dynamic_cast<VisibilityGroup*>(node.get());
+    if (!group || group->getNumChildren() != 1)
+        throw SceneError("cannot read scene '" + path +
+                         "': it did not load as a cellportal VisibilityGroup holding one model");
+    std::cerr << "scene '" << path << "': baked cell-portal data " << trustLine(*group) << std::endl;
+    return group->getChild(0);
+}
+
+#ifdef OSGVIS_PLUGIN_INSTALL_SUBDIR
+// Plugin folders as seen from the running executable: <prefix>/bin/exe → <prefix>/<plugin dir>, for
+// an installation moved away from its configured prefix.
+std::string pluginDirBesideExecutable(const std::string& relativePluginDir)
+{
+    std::error_code error;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (error || relativePluginDir.empty())
+        return "";
+    return (exe.parent_path().parent_path() / relativePluginDir).lexically_normal().string();
+}
+#endif
 } // namespace
+
+void addOsgVisPluginPaths()
+{
+    std::vector<std::string> folders;
+#ifdef OSGVIS_PLUGIN_BUILD_DIR
+    folders.emplace_back(OSGVIS_PLUGIN_BUILD_DIR);
+#endif
+#ifdef OSGVIS_PLUGIN_INSTALL_DIR
+    folders.emplace_back(OSGVIS_PLUGIN_INSTALL_DIR);
+#endif
+#ifdef OSGVIS_PLUGIN_INSTALL_SUBDIR
+    folders.push_back(pluginDirBesideExecutable(OSGVIS_PLUGIN_INSTALL_SUBDIR));
+#endif
+    osgDB::FilePathList& paths = osgDB::Registry::instance()->getLibraryFilePathList();
+    for (const std::string& folder : folders)
+    {
+        std::error_code error;
+        if (!folder.empty() && std::filesystem::is_directory(folder, error) &&
+            std::find(paths.begin(), paths.end(), folder) == paths.end())
+            paths.push_back(folder); // after OSG_LIBRARY_PATH's entries: the user's plugins win
+    }
+}
 
 ViewerScene loadViewerScene(const ViewerOptions& options)
 {
@@ -71,7 +180,7 @@ ViewerScene loadViewerScene(const ViewerOptions& options)
     }
     else
     {
-        result.model = readModel(options.scenePath);
+        result.model = isPvsPath(options.scenePath) ? readPvsScene(options.scenePath) : readModel(options.scenePath);
         result.name = options.scenePath;
     }
 
@@ -81,7 +190,7 @@ ViewerScene loadViewerScene(const ViewerOptions& options)
 
     std::string walkPath = options.walkPath;
     if (walkPath.empty() && options.generateKind.empty())
-        walkPath = walkBeside(options.scenePath);
+        walkPath = isPvsPath(options.scenePath) ? walkForPvs(options.scenePath) : walkBeside(options.scenePath);
     if (!walkPath.empty())
     {
         result.walk = readWalk(walkPath);

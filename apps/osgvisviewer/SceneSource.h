@@ -1,6 +1,7 @@
 #pragma once
 // Where the viewer's scene and walk come from: a model file (with the walk beside it, a walk
-// given by --walk, or an automatic orbit) or a generated scene with its own walk.
+// given by --walk, or an automatic orbit), a baked `.pvs` file (the model it names, with its baked
+// cell-portal data registered for the cellportal modes) or a generated scene with its own walk.
 #include "Options.h"
 
 #include <osgVis/SceneExtractor>
@@ -29,6 +30,12 @@ struct ViewerScene
 };
 
 // Throws SceneError with a message that names the file at fault (unreadable model, empty scene,
-// malformed walk with the parser's line message).
+// malformed walk with the parser's line message). For a `.pvs` scene it prints to stderr whether
+// the baked data are trusted (and why not).
 ViewerScene loadViewerScene(const ViewerOptions& options);
+
+// Appends osgVis's plugin folders (the build tree's, the installed one, and the one beside the
+// running executable's install prefix) to osgDB's library path, after the user's OSG_LIBRARY_PATH,
+// so `.pvs` files load from the build tree and after installation. Call once at startup.
+void addOsgVisPluginPaths();
 } // namespace osgVis::viewer

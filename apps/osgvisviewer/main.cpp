@@ -12,6 +12,7 @@
 int main(int argc, char** argv)
 {
     using namespace osgVis::viewer;
+    addOsgVisPluginPaths(); // .pvs scenes load from the build tree and after install
     const std::string program = "osgvisviewer";
     ViewerOptions options;
     try
