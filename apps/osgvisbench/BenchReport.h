@@ -61,6 +61,15 @@ struct SweepReport
     std::vector<SweepDeterminism> determinism;
 };
 
+// One stage of the progressive cell-portal table (docs/benchmark.md, "Progressive table"): the mean
+// over the views of the fraction of the scene's triangles / objects the stage keeps.
+struct ProgressiveRow
+{
+    std::string stage; // "entire model", "cell-to-cell", "cell-to-object", "eye-to-cell", "eye-to-object"
+    double drawnFraction = 0.0;
+    double objectsFraction = 0.0;
+};
+
 struct BenchReport
 {
     std::string scene;
@@ -75,5 +84,6 @@ struct BenchReport
     std::uint64_t supersampleExtras = 0;
     std::vector<ModeResult> modes; // empty with --cull-only
     SweepReport sweeps;
+    std::vector<ProgressiveRow> progressive; // empty unless a mode has a cellportal stage
 };
 } // namespace osgVis::bench

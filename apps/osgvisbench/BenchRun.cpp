@@ -10,6 +10,7 @@
 #include "ModeGraph.h"
 #include "ModePass.h"
 #include "OracleReference.h"
+#include "ProgressiveTable.h"
 
 #include <iostream>
 #include <memory>
@@ -102,12 +103,17 @@ BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& 
     report.height = walk.height;
     report.command = options.commandLine;
     report.supersample = options.supersample;
+    // note: the shared extraction keeps no triangles; object-space occluders and cells are made of them
+    osg::ref_ptr<ExtractedScene> withTriangles;
+    if (options.sweeps() || wantsProgressiveTable(modes))
+        withTriangles = extractScene(*scene.model);
+    // Before the rendered passes: a bake made here is registered, so their cellportal modes reuse it.
+    if (wantsProgressiveTable(modes))
+        report.progressive = runProgressiveTable(withTriangles->scene, walk);
     if (!options.cullOnly)
         renderModes(report, scene, walk, views, modes, options.supersample);
     if (options.sweeps())
     {
-        // note: the shared extraction keeps no triangles; object-space occluders are made of them
-        const osg::ref_ptr<ExtractedScene> withTriangles = extractScene(*scene.model);
         report.sweeps =
             runCullSweeps(withTriangles->scene, scene.walk, modes, {options.speeds, options.threads, options.cube});
         if (report.sweeps.points.empty())

@@ -79,6 +79,15 @@ void writeSweeps(std::ostream& out, const SweepReport& sweeps)
             << (sweeps.determinism[i].identicalAcrossThreads ? "true" : "false");
     out << "}\n";
 }
+void writeProgressive(std::ostream& out, const std::vector<ProgressiveRow>& rows)
+{
+    out << "  \"progressive\": [";
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        out << (i ? ",\n" : "\n") << "    {\"stage\": " << jsonString(rows[i].stage)
+            << ", \"drawn_fraction\": " << jsonNumber(rows[i].drawnFraction)
+            << ", \"objects_fraction\": " << jsonNumber(rows[i].objectsFraction) << "}";
+    out << (rows.empty() ? "],\n" : "\n  ],\n");
+}
 } // namespace
 
 void writeReportJson(std::ostream& out, const BenchReport& report)
@@ -106,6 +115,7 @@ void writeReportJson(std::ostream& out, const BenchReport& report)
         out << (i + 1 < report.modes.size() ? ",\n" : "\n");
     }
     out << "  },\n";
+    writeProgressive(out, report.progressive);
     writeSweeps(out, report.sweeps);
     out << "}\n";
 }

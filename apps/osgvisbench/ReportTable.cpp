@@ -75,6 +75,17 @@ void writeSweepTable(std::ostream& out, const SweepReport& sweeps)
             out << "NO (" << determinism.differingViews << " answers differ)\n";
     }
 }
+void writeProgressiveTable(std::ostream& out, const std::vector<ProgressiveRow>& rows)
+{
+    out << "\nprogressive cell-portal table (cull only, mean over the views):\n";
+    std::size_t nameWidth = 5;
+    for (const ProgressiveRow& row : rows)
+        nameWidth = std::max(nameWidth, row.stage.size());
+    out << leftCell("stage", nameWidth) << cell("drawn%", 9) << cell("objects%", 10) << "\n";
+    for (const ProgressiveRow& row : rows)
+        out << leftCell(row.stage, nameWidth) << cell(formatted(row.drawnFraction, "%.2f", 100.0), 9)
+            << cell(formatted(row.objectsFraction, "%.2f", 100.0), 10) << "\n";
+}
 } // namespace
 
 void writeReportTable(std::ostream& out, const BenchReport& report)
@@ -86,6 +97,8 @@ void writeReportTable(std::ostream& out, const BenchReport& report)
         << report.viewsWithSupersampleExtras.size() << " views)\n\n";
     if (!report.modes.empty())
         writeModeTable(out, report);
+    if (!report.progressive.empty())
+        writeProgressiveTable(out, report.progressive);
     if (!report.sweeps.points.empty())
         writeSweepTable(out, report.sweeps);
     out.flush();
