@@ -1,0 +1,26 @@
+#pragma once
+// Whether a .pvs file's data were baked for a model, and the VisibilityGroup that shows the model
+// either way: "cellportal" when the data are trusted, "frustum" when not. The group carries a
+// description an application can test:
+//   "osgVis:pvs-trusted"                   the .pvs matches the model; its data are registered
+//   "osgVis:pvs-untrusted: <reason>"       corrupt .pvs, or baked for another model
+#include <osgVis/VisibilityGroup>
+#include <osgVis/core/CellPortalData.h>
+
+#include <osg/Node>
+
+#include <string>
+
+namespace osgVis::pvsplugin
+{
+extern const char* const TrustedDescription;
+extern const char* const UntrustedPrefix; // followed by the reason
+
+// "" when `data` were baked for `model` (same fingerprint and object count), else why not.
+std::string mismatchWithModel(const core::CellPortalData& data, osg::Node& model);
+
+osg::ref_ptr<VisibilityGroup> makeTrustedGroup(osg::Node& model, const std::string& name);
+osg::ref_ptr<VisibilityGroup> makeUntrustedGroup(osg::Node& model, const std::string& name, const std::string& reason);
+// True for a group this plugin made (its child is the model a .pvs was read with).
+bool isPvsGroup(const osg::Node& node);
+} // namespace osgVis::pvsplugin
