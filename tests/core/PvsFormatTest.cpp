@@ -132,6 +132,20 @@ TEST(PvsFormat, RoundTripKeepsEveryField)
     EXPECT_EQ(encodePvs(decoded), bytes); // one spelling per content
 }
 
+TEST(PvsFormat, EmptyDataRoundTrips)
+{
+    const PvsFile empty;
+    const std::vector<std::uint8_t> bytes = encodePvs(empty);
+    expectSameFile(decodePvs(bytes.data(), bytes.size()), empty);
+}
+
+TEST(PvsFormat, ChecksumIsZlibCrc32)
+{
+    const std::string check = "123456789";
+    EXPECT_EQ(crc32(reinterpret_cast<const std::uint8_t*>(check.data()), check.size()), 0xCBF43926u);
+    EXPECT_EQ(crc32(nullptr, 0), 0u);
+}
+
 TEST(PvsFormat, StartsWithMagicAndVersionLittleEndian)
 {
     const std::vector<std::uint8_t> bytes = encodePvs(makeSamplePvs());
