@@ -70,6 +70,10 @@ osgDB::ReaderWriter::ReadResult showWithModel(core::PvsFile&& pvs, const std::st
     if (modelFile.empty())
         return osgDB::ReaderWriter::ReadResult("osgVis: cannot find model '" + pvs.modelPath + "' named by " + pvsFile +
                                                " (looked beside the .pvs, as given and on the data path)");
+    // A .pvs naming a .pvs (itself, say) would recurse without end.
+    if (osgDB::getLowerCaseFileExtension(modelFile) == "pvs")
+        return osgDB::ReaderWriter::ReadResult("osgVis: " + pvsFile + " names another .pvs, '" + modelFile +
+                                               "', as its model");
     osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(modelFile, options);
     if (!model)
         return osgDB::ReaderWriter::ReadResult("osgVis: cannot read model '" + modelFile + "' named by " + pvsFile);
@@ -114,7 +118,11 @@ public:
             }
             catch (const core::PvsFormatError& e)
             {
-                return showCorruptWithModelBeside(pvsFile, e.what(), options);
+                // The messages below name the file already; keep the reason only.
+                std::string reason = e.what();
+                if (reason.rfind(pvsFile + ": ", 0) == 0)
+                    reason.erase(0, pvsFile.size() + 2);
+                return showCorruptWithModelBeside(pvsFile, reason, options);
             }
             return showWithModel(std::move(pvs), pvsFile, options);
         }

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 namespace fs = std::filesystem;
 
@@ -112,7 +113,7 @@ TEST_F(PvsPlugin, TruncatedPvsShowsTheModelBesideWithFrustumOnly)
     const osg::ref_ptr<osgVis::VisibilityGroup> group = readGroup(path("x.pvs"));
     ASSERT_TRUE(group.valid());
     EXPECT_EQ(group->getModes(), "frustum");
-    const std::string expected = "osgVis:pvs-untrusted: corrupt .pvs: " + path("x.pvs") + ": truncated at byte " +
+    const std::string expected = "osgVis:pvs-untrusted: corrupt .pvs: truncated at byte " +
                                  std::to_string(fs::file_size(path("x.pvs"))) + " while reading ";
     EXPECT_EQ(description(*group).rfind(expected, 0), 0u) << description(*group);
 }
@@ -125,8 +126,7 @@ TEST_F(PvsPlugin, TruncatedPvsWithoutModelIsAnError)
     osgDB::ReaderWriter::ReadResult result =
         osgDB::Registry::instance()->readNode(path("x.pvs"), osgDB::Registry::instance()->getOptions());
     EXPECT_FALSE(result.validNode());
-    EXPECT_EQ(result.message().rfind("osgVis: " + path("x.pvs") + " is corrupt (" + path("x.pvs") + ": truncated at byte ", 0),
-              0u)
+    EXPECT_EQ(result.message().rfind("osgVis: " + path("x.pvs") + " is corrupt (truncated at byte ", 0), 0u)
         << result.message();
     EXPECT_NE(result.message().find(") and no model lies beside it (" + path("x") + ".osgb, .osgt, .ive or .osg)"),
               std::string::npos)
@@ -175,4 +175,30 @@ TEST_F(PvsPlugin, GroupReadFromPvsWritesItsModel)
     EXPECT_EQ(description(*again), "osgVis:pvs-trusted");
     EXPECT_EQ(osgVis::core::readPvsFile(path("again.pvs")).data.fingerprint,
               osgVis::core::readPvsFile(path("x.pvs")).data.fingerprint);
+}
+
+TEST_F(PvsPlugin, StreamReadFindsTheModelOnTheDatabasePath)
+{
+    writeOffice();
+    osgDB::ReaderWriter* rw = osgDB::Registry::instance()->getReaderWriterForExtension("pvs");
+    ASSERT_NE(rw, nullptr);
+    std::ifstream in(path("x.pvs"), std::ios::binary);
+    osg::ref_ptr<osgDB::Options> options = new osgDB::Options;
+    options->getDatabasePathList().push_back(_dir.string());
+    osgDB::ReaderWriter::ReadResult result = rw->readNode(in, options.get());
+    ASSERT_TRUE(result.validNode()) << result.message();
+    EXPECT_EQ(description(*result.getNode()), "osgVis:pvs-trusted");
+}
+
+TEST_F(PvsPlugin, PvsNamingAPvsIsAnError)
+{
+    writeOffice();
+    osgVis::core::PvsFile pvs = osgVis::core::readPvsFile(path("x.pvs"));
+    pvs.modelPath = "x.pvs";
+    osgVis::core::writePvsFile(path("x.pvs"), pvs);
+    osgDB::ReaderWriter::ReadResult result =
+        osgDB::Registry::instance()->readNode(path("x.pvs"), osgDB::Registry::instance()->getOptions());
+    EXPECT_FALSE(result.validNode());
+    EXPECT_EQ(result.message(), "osgVis: " + path("x.pvs") + " names another .pvs, '" + path("x.pvs") +
+                                    "', as its model");
 }
