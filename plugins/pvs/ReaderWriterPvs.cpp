@@ -160,8 +160,7 @@ public:
         if (!acceptsExtension(osgDB::getLowerCaseFileExtension(file)))
             return WriteResult::FILE_NOT_HANDLED;
         // note: extraction only reads the graph; osgVis::extractScene takes a non-const root.
-        osg::Node& subject =
-            const_cast<osg::Node&>(isPvsGroup(node) ? *node.asGroup()->getChild(0) : node);
+        osg::Node& subject = const_cast<osg::Node&>(isPvsGroup(node) ? *node.asGroup()->getChild(0) : node);
         try
         {
             const osg::ref_ptr<ExtractedScene> extracted = extractScene(subject);

@@ -312,13 +312,15 @@ TEST(PvsFormat, InconsistentContentIsNamed)
         {portals + 4 + 41, 7, 4, "portal 0 joining cells 7 and 1 of 3"},
         {portals + 4 + 45, 0, 4, "portal 0 joining cells 0 and 0 of 3"},
         // source 0, node 1 (flag, count, then 16 bytes a node): parent 0 made "none".
-        {sources + 4 + 1 + 4 + 16 + 8, 0xFFFFFFFFu, 4, "stab node 1 of source cell 0 names parent none where "
-                                                         "preorder gives 0"},
+        {sources + 4 + 1 + 4 + 16 + 8, 0xFFFFFFFFu, 4,
+         "stab node 1 of source cell 0 names parent none where "
+         "preorder gives 0"},
         // node 0's subtree made to end before node 1, which still names it as parent.
         {sources + 4 + 1 + 4 + 12, 1, 4, "stab node 1 of source cell 0 names parent 0 where preorder gives none"},
         {sources + 4 + 1 + 4 + 12, 3, 4, "stab node 0 of source cell 0 has subtree end 3 outside (0, 2]"},
-        {sources + 4 + 1 + 4 + 0, 1, 4, "stab node 0 of source cell 0 crosses portal 1 which does not join cells "
-                                        "0 and 1"},
+        {sources + 4 + 1 + 4 + 0, 1, 4,
+         "stab node 0 of source cell 0 crosses portal 1 which does not join cells "
+         "0 and 1"},
         {sources + 4, 2, 1, "budget flag 2 of source cell 0"},
     };
     for (const Case& c : cases)

@@ -34,8 +34,8 @@ private:
     // A u32 count placed where a count is (start of a section body, or a node count of a source).
     void overwriteCount(std::vector<std::uint8_t>& bytes, std::mt19937& random) const
     {
-        static const std::uint32_t values[] = {0, 1, 2, 3, 4, 5, 36, 37, 38, 255, 0x10000, 0x7FFFFFFF, 0xFFFFFFFE,
-                                               0xFFFFFFFF};
+        static const std::uint32_t values[] = {0,  1,  2,   3,       4,          5,          36,
+                                               37, 38, 255, 0x10000, 0x7FFFFFFF, 0xFFFFFFFE, 0xFFFFFFFF};
         const std::size_t body = osgVis::test::sectionBody(bytes, SectionTags[pick(random, 9)]);
         if (body == std::string::npos || body + 4 > bytes.size())
             return;

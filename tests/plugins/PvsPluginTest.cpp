@@ -199,6 +199,6 @@ TEST_F(PvsPlugin, PvsNamingAPvsIsAnError)
     osgDB::ReaderWriter::ReadResult result =
         osgDB::Registry::instance()->readNode(path("x.pvs"), osgDB::Registry::instance()->getOptions());
     EXPECT_FALSE(result.validNode());
-    EXPECT_EQ(result.message(), "osgVis: " + path("x.pvs") + " names another .pvs, '" + path("x.pvs") +
-                                    "', as its model");
+    EXPECT_EQ(result.message(),
+              "osgVis: " + path("x.pvs") + " names another .pvs, '" + path("x.pvs") + "', as its model");
 }

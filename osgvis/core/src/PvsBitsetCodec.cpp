@@ -64,8 +64,7 @@ VisibleSet decodeBitset(PvsByteReader& in, std::uint64_t capacity)
         covered += run;
     }
     if (covered != capacity)
-        check.fail("bitset runs covering " + std::to_string(covered) + " of its " + std::to_string(capacity) +
-                   " bits");
+        check.fail("bitset runs covering " + std::to_string(covered) + " of its " + std::to_string(capacity) + " bits");
     VisibleSet set(capacity);
     std::uint64_t position = 0;
     for (std::uint64_t r = 0; r < runs; ++r)

@@ -191,8 +191,7 @@ PvsByteReader PvsByteReader::take(std::uint64_t length)
 {
     if (length > remaining())
         throw PvsFormatError("truncated at byte " + std::to_string(_end) + " while reading " + _context + " (" +
-                             std::to_string(length) + " bytes announced, " + std::to_string(remaining()) +
-                             " present)");
+                             std::to_string(length) + " bytes announced, " + std::to_string(remaining()) + " present)");
     PvsByteReader part(_bytes, _pos, _pos + static_cast<std::size_t>(length));
     part._context = _context;
     _pos += static_cast<std::size_t>(length);

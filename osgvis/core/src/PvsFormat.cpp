@@ -65,14 +65,17 @@ std::uint32_t checkedCount(std::size_t count, const char* what)
     return static_cast<std::uint32_t>(count);
 }
 
-// Writes one section: tag, u64 body length, body.
-template <typename Body> void writeSection(PvsByteWriter& out, const Section& section, Body&& body)
+// A section is its tag, the u64 length of its body, and the body; the length is known at its end.
+std::size_t beginSection(PvsByteWriter& out, const Section& section)
 {
     out.u32(tagValue(section));
-    const std::size_t lengthAt = out.size();
     out.u64(0);
-    body();
-    out.patchU64(lengthAt, out.size() - lengthAt - 8);
+    return out.size();
+}
+
+void endSection(PvsByteWriter& out, std::size_t bodyStart)
+{
+    out.patchU64(bodyStart - 8, out.size() - bodyStart);
 }
 
 void writeAabb(PvsByteWriter& out, const Aabb& box)
@@ -118,8 +121,8 @@ PvsByteReader openSection(PvsByteReader& in, const Section& section)
     const std::size_t at = in.position();
     const std::uint32_t tag = in.u32();
     if (tag != tagValue(section))
-        throw PvsFormatError("section '" + tagText(tag) + "' at byte " + std::to_string(at) + " where '" +
-                             section.tag + "' (" + section.name + ") was expected");
+        throw PvsFormatError("section '" + tagText(tag) + "' at byte " + std::to_string(at) + " where '" + section.tag +
+                             "' (" + section.name + ") was expected");
     return in.take(in.u64());
 }
 
@@ -154,186 +157,214 @@ void checkStabTree(const PvsByteReader& in, const std::vector<StabNode>& nodes, 
     for (std::uint32_t i = 0; i < n; ++i)
     {
         const StabNode& node = nodes[i];
-        const std::string which = "stab node " + std::to_string(i) + " of source cell " + std::to_string(sourceCell);
+        // note: built only for a message; a large bake has millions of nodes.
+        const auto which = [&]
+        { return "stab node " + std::to_string(i) + " of source cell " + std::to_string(sourceCell); };
         while (!open.empty() && nodes[open.back()].subtreeEnd <= i)
             open.pop_back();
         const std::uint32_t expectedParent = open.empty() ? NoStabParent : open.back();
         if (node.parent != expectedParent)
-            in.fail(which + " names parent " + parentText(node.parent) + " where preorder gives " +
+            in.fail(which() + " names parent " + parentText(node.parent) + " where preorder gives " +
                     parentText(expectedParent));
         const std::uint32_t limit = open.empty() ? n : nodes[open.back()].subtreeEnd;
         if (node.subtreeEnd <= i || node.subtreeEnd > limit)
-            in.fail(which + " has subtree end " + std::to_string(node.subtreeEnd) + " outside (" +
-                    std::to_string(i) + ", " + std::to_string(limit) + "]");
+            in.fail(which() + " has subtree end " + std::to_string(node.subtreeEnd) + " outside (" + std::to_string(i) +
+                    ", " + std::to_string(limit) + "]");
         if (node.portal >= graph.portals.size())
-            in.fail(which + " names portal " + std::to_string(node.portal) + " of " +
+            in.fail(which() + " names portal " + std::to_string(node.portal) + " of " +
                     std::to_string(graph.portals.size()));
         const CellPortal& portal = graph.portals[node.portal];
         const std::uint32_t from = open.empty() ? sourceCell : nodes[open.back()].cell;
         if (!((portal.lowCell == from && portal.highCell == node.cell) ||
               (portal.highCell == from && portal.lowCell == node.cell)))
-            in.fail(which + " crosses portal " + std::to_string(node.portal) + " which does not join cells " +
+            in.fail(which() + " crosses portal " + std::to_string(node.portal) + " which does not join cells " +
                     std::to_string(from) + " and " + std::to_string(node.cell));
         open.push_back(i);
     }
 }
 
+void readModelHeader(PvsByteReader& s, PvsFile& file)
+{
+    CellPortalData& d = file.data;
+    d.fingerprint = s.u64();
+    d.objectCount = s.u32();
+    file.modelPath = s.string();
+}
+
+void readBounds(PvsByteReader& s, PvsFile& file)
+{
+    file.data.graph.bounds = readAabb(s);
+}
+
+void readCells(PvsByteReader& s, PvsFile& file)
+{
+    CellGraph& g = file.data.graph;
+    const std::uint32_t count = s.u32();
+    s.requireItems(count, 6 * 8);
+    g.cells.reserve(count);
+    for (std::uint32_t c = 0; c < count; ++c)
+    {
+        g.cells.push_back(readAabb(s));
+        if (g.cells.back().empty())
+            s.fail("cell " + std::to_string(c) + " with min above max");
+    }
+}
+
+void readCellNames(PvsByteReader& s, PvsFile& file)
+{
+    CellGraph& g = file.data.graph;
+    const auto cellCount = static_cast<std::uint32_t>(g.cells.size());
+    const std::uint32_t count = s.u32();
+    if (count != 0 && count != cellCount)
+        s.fail(std::to_string(count) + " cell names for " + std::to_string(cellCount) + " cells");
+    s.requireItems(count, 4);
+    g.cellNames.reserve(count);
+    for (std::uint32_t c = 0; c < count; ++c)
+        g.cellNames.push_back(s.string());
+}
+
+void readKdNodes(PvsByteReader& s, PvsFile& file)
+{
+    CellGraph& g = file.data.graph;
+    const auto cellCount = static_cast<std::uint32_t>(g.cells.size());
+    const std::uint32_t count = s.u32();
+    s.requireItems(count, 1 + 8 + 4 + 4);
+    g.nodes.resize(count);
+    for (std::uint32_t i = 0; i < count; ++i)
+    {
+        CellGraph::KdNode& node = g.nodes[i];
+        node.axis = s.u8();
+        node.split = s.finiteF64();
+        node.children[0] = s.u32();
+        node.children[1] = s.u32();
+        if (node.axis > 3)
+            s.fail("kd node " + std::to_string(i) + " with axis " + std::to_string(node.axis));
+        const bool leafOk = node.children[0] < cellCount && node.children[1] == NoCell;
+        // note: children after their parent keeps every descent finite.
+        const bool innerOk =
+            node.children[0] > i && node.children[0] < count && node.children[1] > i && node.children[1] < count;
+        if (node.axis == 3 ? !leafOk : !innerOk)
+            s.fail("kd node " + std::to_string(i) + " with children " + std::to_string(node.children[0]) + ", " +
+                   std::to_string(node.children[1]) + " out of range");
+    }
+}
+
+void readPortals(PvsByteReader& s, PvsFile& file)
+{
+    CellGraph& g = file.data.graph;
+    const auto cellCount = static_cast<std::uint32_t>(g.cells.size());
+    const std::uint32_t count = s.u32();
+    s.requireItems(count, 1 + 5 * 8 + 2 * 4);
+    g.portals.resize(count);
+    for (std::uint32_t p = 0; p < count; ++p)
+    {
+        CellPortal& portal = g.portals[p];
+        portal.rect.axis = s.u8();
+        if (portal.rect.axis > 2)
+            s.fail("portal " + std::to_string(p) + " with axis " + std::to_string(portal.rect.axis));
+        portal.rect.coordinate = s.finiteF64();
+        portal.rect.uMin = s.finiteF64();
+        portal.rect.uMax = s.finiteF64();
+        portal.rect.vMin = s.finiteF64();
+        portal.rect.vMax = s.finiteF64();
+        portal.lowCell = s.u32();
+        portal.highCell = s.u32();
+        if (portal.lowCell >= cellCount || portal.highCell >= cellCount || portal.lowCell == portal.highCell)
+            s.fail("portal " + std::to_string(p) + " joining cells " + std::to_string(portal.lowCell) + " and " +
+                   std::to_string(portal.highCell) + " of " + std::to_string(cellCount));
+    }
+}
+
+void readCellPortals(PvsByteReader& s, PvsFile& file)
+{
+    CellGraph& g = file.data.graph;
+    const auto cellCount = static_cast<std::uint32_t>(g.cells.size());
+    const std::uint32_t count = s.u32();
+    if (count != cellCount)
+        s.fail(std::to_string(count) + " portal lists for " + std::to_string(cellCount) + " cells");
+    s.requireItems(count, 4);
+    g.cellPortals.resize(count);
+    for (std::uint32_t c = 0; c < count; ++c)
+    {
+        const std::uint32_t n = s.u32();
+        s.requireItems(n, 4);
+        g.cellPortals[c].resize(n);
+        for (std::uint32_t& p : g.cellPortals[c])
+        {
+            p = s.u32();
+            if (p >= g.portals.size() || (g.portals[p].lowCell != c && g.portals[p].highCell != c))
+                s.fail("cell " + std::to_string(c) + " lists portal " + std::to_string(p) + " that does not border it");
+        }
+    }
+}
+
+void readSources(PvsByteReader& s, PvsFile& file)
+{
+    CellPortalData& d = file.data;
+    CellGraph& g = file.data.graph;
+    const auto cellCount = static_cast<std::uint32_t>(g.cells.size());
+    const std::uint32_t count = s.u32();
+    if (count != cellCount)
+        s.fail(std::to_string(count) + " source cells for " + std::to_string(cellCount) + " cells");
+    // note: the smallest source is a flag, a node count and two bitsets of one byte each.
+    s.requireItems(count, 1 + 4 + 1 + 1);
+    d.sources.resize(count);
+    for (std::uint32_t c = 0; c < count; ++c)
+    {
+        SourceCellVisibility& source = d.sources[c];
+        const std::uint8_t flag = s.u8();
+        if (flag > 1)
+            s.fail("budget flag " + std::to_string(flag) + " of source cell " + std::to_string(c));
+        source.budgetExceeded = flag == 1;
+        const std::uint32_t n = s.u32();
+        s.requireItems(n, 4 * 4);
+        source.stabTree.resize(n);
+        for (StabNode& node : source.stabTree)
+        {
+            node.portal = s.u32();
+            node.cell = s.u32();
+            node.parent = s.u32();
+            node.subtreeEnd = s.u32();
+        }
+        checkStabTree(s, source.stabTree, c, g);
+        source.cellToCell = decodeBitset(s, cellCount);
+        source.cellToObject = decodeBitset(s, d.objectCount);
+    }
+}
+
+void readStatistics(PvsByteReader& s, PvsFile& file)
+{
+    CellPortalData& d = file.data;
+    BakeStatistics& st = d.statistics;
+    st.cells = s.u32();
+    st.portals = s.u32();
+    st.budgetExceededCells = s.u32();
+    st.stabNodes = s.u64();
+    st.averageVisibleCells = s.finiteF64();
+    st.averagePvsObjects = s.finiteF64();
+    st.seconds = s.finiteF64();
+}
+
+// Reads one section with `read`, checking its tag before and that it used its body exactly after.
+void readSection(PvsByteReader& in, const Section& section, PvsFile& file, void (*read)(PvsByteReader&, PvsFile&))
+{
+    PvsByteReader body = openSection(in, section);
+    read(body, file);
+    closeSection(body);
+}
+
 PvsFile readBody(PvsByteReader& in)
 {
     PvsFile file;
-    CellPortalData& d = file.data;
-    CellGraph& g = d.graph;
-
-    {
-        PvsByteReader s = openSection(in, ModelSection);
-        d.fingerprint = s.u64();
-        d.objectCount = s.u32();
-        file.modelPath = s.string();
-        closeSection(s);
-    }
-    {
-        PvsByteReader s = openSection(in, BoundsSection);
-        g.bounds = readAabb(s);
-        closeSection(s);
-    }
-    {
-        PvsByteReader s = openSection(in, CellSection);
-        const std::uint32_t count = s.u32();
-        s.requireItems(count, 6 * 8);
-        g.cells.reserve(count);
-        for (std::uint32_t c = 0; c < count; ++c)
-        {
-            g.cells.push_back(readAabb(s));
-            if (g.cells.back().empty())
-                s.fail("cell " + std::to_string(c) + " with min above max");
-        }
-        closeSection(s);
-    }
-    const std::uint32_t cellCount = static_cast<std::uint32_t>(g.cells.size());
-    {
-        PvsByteReader s = openSection(in, NameSection);
-        const std::uint32_t count = s.u32();
-        if (count != 0 && count != cellCount)
-            s.fail(std::to_string(count) + " cell names for " + std::to_string(cellCount) + " cells");
-        s.requireItems(count, 4);
-        g.cellNames.reserve(count);
-        for (std::uint32_t c = 0; c < count; ++c)
-            g.cellNames.push_back(s.string());
-        closeSection(s);
-    }
-    {
-        PvsByteReader s = openSection(in, KdSection);
-        const std::uint32_t count = s.u32();
-        s.requireItems(count, 1 + 8 + 4 + 4);
-        g.nodes.resize(count);
-        for (std::uint32_t i = 0; i < count; ++i)
-        {
-            CellGraph::KdNode& node = g.nodes[i];
-            node.axis = s.u8();
-            node.split = s.finiteF64();
-            node.children[0] = s.u32();
-            node.children[1] = s.u32();
-            if (node.axis > 3)
-                s.fail("kd node " + std::to_string(i) + " with axis " + std::to_string(node.axis));
-            const bool leafOk = node.children[0] < cellCount && node.children[1] == NoCell;
-            // note: children after their parent keeps every descent finite.
-            const bool innerOk = node.children[0] > i && node.children[0] < count && node.children[1] > i &&
-                                 node.children[1] < count;
-            if (node.axis == 3 ? !leafOk : !innerOk)
-                s.fail("kd node " + std::to_string(i) + " with children " + std::to_string(node.children[0]) +
-                       ", " + std::to_string(node.children[1]) + " out of range");
-        }
-        closeSection(s);
-    }
-    {
-        PvsByteReader s = openSection(in, PortalSection);
-        const std::uint32_t count = s.u32();
-        s.requireItems(count, 1 + 5 * 8 + 2 * 4);
-        g.portals.resize(count);
-        for (std::uint32_t p = 0; p < count; ++p)
-        {
-            CellPortal& portal = g.portals[p];
-            portal.rect.axis = s.u8();
-            if (portal.rect.axis > 2)
-                s.fail("portal " + std::to_string(p) + " with axis " + std::to_string(portal.rect.axis));
-            portal.rect.coordinate = s.finiteF64();
-            portal.rect.uMin = s.finiteF64();
-            portal.rect.uMax = s.finiteF64();
-            portal.rect.vMin = s.finiteF64();
-            portal.rect.vMax = s.finiteF64();
-            portal.lowCell = s.u32();
-            portal.highCell = s.u32();
-            if (portal.lowCell >= cellCount || portal.highCell >= cellCount || portal.lowCell == portal.highCell)
-                s.fail("portal " + std::to_string(p) + " joining cells " + std::to_string(portal.lowCell) + " and " +
-                       std::to_string(portal.highCell) + " of " + std::to_string(cellCount));
-        }
-        closeSection(s);
-    }
-    {
-        PvsByteReader s = openSection(in, CellPortalSection);
-        const std::uint32_t count = s.u32();
-        if (count != cellCount)
-            s.fail(std::to_string(count) + " portal lists for " + std::to_string(cellCount) + " cells");
-        s.requireItems(count, 4);
-        g.cellPortals.resize(count);
-        for (std::uint32_t c = 0; c < count; ++c)
-        {
-            const std::uint32_t n = s.u32();
-            s.requireItems(n, 4);
-            g.cellPortals[c].resize(n);
-            for (std::uint32_t& p : g.cellPortals[c])
-            {
-                p = s.u32();
-                if (p >= g.portals.size() || (g.portals[p].lowCell != c && g.portals[p].highCell != c))
-                    s.fail("cell " + std::to_string(c) + " lists portal " + std::to_string(p) +
-                           " that does not border it");
-            }
-        }
-        closeSection(s);
-    }
-    {
-        PvsByteReader s = openSection(in, SourceSection);
-        const std::uint32_t count = s.u32();
-        if (count != cellCount)
-            s.fail(std::to_string(count) + " source cells for " + std::to_string(cellCount) + " cells");
-        // note: the smallest source is a flag, a node count and two bitsets of one byte each.
-        s.requireItems(count, 1 + 4 + 1 + 1);
-        d.sources.resize(count);
-        for (std::uint32_t c = 0; c < count; ++c)
-        {
-            SourceCellVisibility& source = d.sources[c];
-            const std::uint8_t flag = s.u8();
-            if (flag > 1)
-                s.fail("budget flag " + std::to_string(flag) + " of source cell " + std::to_string(c));
-            source.budgetExceeded = flag == 1;
-            const std::uint32_t n = s.u32();
-            s.requireItems(n, 4 * 4);
-            source.stabTree.resize(n);
-            for (StabNode& node : source.stabTree)
-            {
-                node.portal = s.u32();
-                node.cell = s.u32();
-                node.parent = s.u32();
-                node.subtreeEnd = s.u32();
-            }
-            checkStabTree(s, source.stabTree, c, g);
-            source.cellToCell = decodeBitset(s, cellCount);
-            source.cellToObject = decodeBitset(s, d.objectCount);
-        }
-        closeSection(s);
-    }
-    {
-        PvsByteReader s = openSection(in, StatisticsSection);
-        BakeStatistics& st = d.statistics;
-        st.cells = s.u32();
-        st.portals = s.u32();
-        st.budgetExceededCells = s.u32();
-        st.stabNodes = s.u64();
-        st.averageVisibleCells = s.finiteF64();
-        st.averagePvsObjects = s.finiteF64();
-        st.seconds = s.finiteF64();
-        closeSection(s);
-    }
+    readSection(in, ModelSection, file, readModelHeader);
+    readSection(in, BoundsSection, file, readBounds);
+    readSection(in, CellSection, file, readCells);
+    readSection(in, NameSection, file, readCellNames);
+    readSection(in, KdSection, file, readKdNodes);
+    readSection(in, PortalSection, file, readPortals);
+    readSection(in, CellPortalSection, file, readCellPortals);
+    readSection(in, SourceSection, file, readSources);
+    readSection(in, StatisticsSection, file, readStatistics);
     return file;
 }
 
@@ -356,23 +387,34 @@ std::vector<std::uint8_t> encodePvs(const PvsFile& file)
     out.u32(FormatVersion);
     out.u64(0); // body size, patched below
 
-    writeSection(out, ModelSection, [&] {
+    {
+        const std::size_t body = beginSection(out, ModelSection);
         out.u64(d.fingerprint);
         out.u32(d.objectCount);
         out.string(file.modelPath);
-    });
-    writeSection(out, BoundsSection, [&] { writeAabb(out, g.bounds); });
-    writeSection(out, CellSection, [&] {
+        endSection(out, body);
+    }
+    {
+        const std::size_t body = beginSection(out, BoundsSection);
+        writeAabb(out, g.bounds);
+        endSection(out, body);
+    }
+    {
+        const std::size_t body = beginSection(out, CellSection);
         out.u32(static_cast<std::uint32_t>(g.cells.size()));
         for (const Aabb& cell : g.cells)
             writeAabb(out, cell);
-    });
-    writeSection(out, NameSection, [&] {
+        endSection(out, body);
+    }
+    {
+        const std::size_t body = beginSection(out, NameSection);
         out.u32(static_cast<std::uint32_t>(g.cellNames.size()));
         for (const std::string& name : g.cellNames)
             out.string(name);
-    });
-    writeSection(out, KdSection, [&] {
+        endSection(out, body);
+    }
+    {
+        const std::size_t body = beginSection(out, KdSection);
         out.u32(static_cast<std::uint32_t>(g.nodes.size()));
         for (const CellGraph::KdNode& node : g.nodes)
         {
@@ -381,8 +423,10 @@ std::vector<std::uint8_t> encodePvs(const PvsFile& file)
             out.u32(node.children[0]);
             out.u32(node.children[1]);
         }
-    });
-    writeSection(out, PortalSection, [&] {
+        endSection(out, body);
+    }
+    {
+        const std::size_t body = beginSection(out, PortalSection);
         out.u32(static_cast<std::uint32_t>(g.portals.size()));
         for (const CellPortal& p : g.portals)
         {
@@ -395,8 +439,10 @@ std::vector<std::uint8_t> encodePvs(const PvsFile& file)
             out.u32(p.lowCell);
             out.u32(p.highCell);
         }
-    });
-    writeSection(out, CellPortalSection, [&] {
+        endSection(out, body);
+    }
+    {
+        const std::size_t body = beginSection(out, CellPortalSection);
         out.u32(static_cast<std::uint32_t>(g.cellPortals.size()));
         for (const std::vector<std::uint32_t>& list : g.cellPortals)
         {
@@ -404,8 +450,10 @@ std::vector<std::uint8_t> encodePvs(const PvsFile& file)
             for (std::uint32_t p : list)
                 out.u32(p);
         }
-    });
-    writeSection(out, SourceSection, [&] {
+        endSection(out, body);
+    }
+    {
+        const std::size_t body = beginSection(out, SourceSection);
         out.u32(static_cast<std::uint32_t>(d.sources.size()));
         for (const SourceCellVisibility& source : d.sources)
         {
@@ -421,8 +469,10 @@ std::vector<std::uint8_t> encodePvs(const PvsFile& file)
             encodeBitset(source.cellToCell, out);
             encodeBitset(source.cellToObject, out);
         }
-    });
-    writeSection(out, StatisticsSection, [&] {
+        endSection(out, body);
+    }
+    {
+        const std::size_t body = beginSection(out, StatisticsSection);
         const BakeStatistics& st = d.statistics;
         out.u32(st.cells);
         out.u32(st.portals);
@@ -431,7 +481,8 @@ std::vector<std::uint8_t> encodePvs(const PvsFile& file)
         out.f64(st.averageVisibleCells);
         out.f64(st.averagePvsObjects);
         out.f64(st.seconds);
-    });
+        endSection(out, body);
+    }
 
     out.patchU64(12, out.size() - HeaderBytes);
     out.u32(crc32(out.bytes().data(), out.size()));
@@ -472,12 +523,14 @@ PvsFile decodePvs(const std::uint8_t* bytes, std::size_t size)
         // Parse what is there, so the message says in which part the file ends.
         PvsByteReader body(bytes, HeaderBytes, size);
         readBody(body);
-        throw PvsFormatError("truncated at byte " + std::to_string(size) + " while reading the checksum (the header announces " +
-                             std::to_string(bodySize) + " body bytes)");
+        throw PvsFormatError("truncated at byte " + std::to_string(size) +
+                             " while reading the checksum (the header announces " + std::to_string(bodySize) +
+                             " body bytes)");
     }
     const std::size_t checksumAt = HeaderBytes + static_cast<std::size_t>(bodySize);
     if (available - bodySize > ChecksumBytes)
-        throw PvsFormatError(std::to_string(size - checksumAt - ChecksumBytes) + " unexpected bytes after the checksum at byte " +
+        throw PvsFormatError(std::to_string(size - checksumAt - ChecksumBytes) +
+                             " unexpected bytes after the checksum at byte " +
                              std::to_string(checksumAt + ChecksumBytes));
     PvsByteReader trailer(bytes, checksumAt, size);
     trailer.setContext("checksum");
