@@ -3,12 +3,17 @@
 // and the measured looseness against a brute-force line search.
 #include <osgVis/core/PortalStabbing.h>
 
+#include "AllocationCounter.h"
+
+#include "AllocationCounter.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <thread>
 #include <vector>
 
 using namespace osgVis::core;
@@ -224,7 +229,8 @@ TEST(PortalStabbing, RandomSequencesAroundLinesAreNeverRejected)
     {
         const RandomLineCase c = random.make(2 + trial % 7, random.uniform(-5.0, 5.0));
         ++cases;
-        if (!stabbable(c.portals))
+        // A zero tolerance still accepts: rounding is allowed for inside.
+        if (!stabbable(c.portals) || !portalSequenceStabbable(c.portals.data(), c.portals.size(), 0.0))
         {
             ++rejected;
             ADD_FAILURE() << "trial " << trial << " rejected";
@@ -255,6 +261,76 @@ TEST(PortalStabbing, RandomSequencesAroundLinesAreNeverRejected)
     EXPECT_EQ(boxMisses, 0);
 }
 
+TEST(PortalStabbing, IllConditionedSequencesFoundByStressRuns)
+{
+    // Long chains of 1e-3 portals around one line, where the simplex's tableau once lost accuracy
+    // and reported a too low optimum (first case: the Plücker LP; second: the funnel LP). The
+    // answers now rest on the LP's dual bound, which rounding cannot lower.
+    const std::vector<OrientedPortal> pluckerCase = {
+        portal(0, 5.1757530213548222, -0.81702165486498368, -0.81602165486498368, 2.7457450713090692,
+               2.7509960901562835),
+        portal(2, 5.1928804363630263, 5.3639692505617305, 5.3669830450663047, 0.24803388684873379, 0.28184236122315465),
+        portal(1, 0.58657278357543507, 5.9536323920167016, 5.9879952431251748, 5.4017664712768028, 5.4729279693662534),
+        portal(1, 0.58749114619967191, 5.9572234895894107, 6.0811795238801736, 5.22450664155736, 5.768375917516841),
+        portal(1, 0.59137343175392276, 5.9661061758879921, 5.9781713177072753, 5.4236915917215702, 5.4266864333519829),
+        portal(1, 2.2265853393438335, 9.6998571091397494, 9.7185667437376733, 5.7117432660189094, 5.7138576239134382),
+        portal(2, 13.807278556269971, 5.9804124921805748, 6.0273906822552297, 3.6059646319022964, 4.0872084984391224),
+        portal(2, 13.808943732247894, 6.0272049798674194, 6.0282049798674198, 4.0170895581666288, 4.0191805557263285)};
+    EXPECT_TRUE(stabbable(pluckerCase));
+    const std::vector<OrientedPortal> funnelCase = {
+        portal(2, 1.2396105770794286, 2.2599456491650933, 2.262157753130468, 0.16937296829258902, 0.60207371508290453),
+        portal(0, 2.2598329248521525, 0.4842683111887085, 0.48544095788085662, 1.2435394718615487, 1.2445394718615486,
+               false),
+        portal(1, -0.91599260793863535, 4.777918134951423, 4.8052678560999142, 0.57249416577492551, 0.57349416577492551,
+               false),
+        portal(2, 6.2021513156259367, -0.097756080914980531, -0.093657306851701705, -1.4704295277353254,
+               -1.416056928473534),
+        portal(1, -2.9253423090864725, 5.2799034718521467, 9.8900344890577117, -2.0671506683666738, 0.76547417734488699,
+               false)};
+    EXPECT_TRUE(stabbable(funnelCase));
+}
+
+TEST(PortalStabbing, RandomSequencesAtOtherScalesAndPlaces)
+{
+    // The same construction scaled by 1e-3 and 1e3 and moved far from the origin, with the
+    // tolerance scaled alike: the normalised frame keeps the answers.
+    RandomLines random(31337);
+    const double scales[] = {1e-3, 1e3};
+    const Vec3 offset(12345.0, -6789.0, 4242.0);
+    int rejected = 0;
+    for (int trial = 0; trial < 1000; ++trial)
+    {
+        const double scale = scales[trial % 2];
+        RandomLineCase c = random.make(2 + trial % 7, random.uniform(-5.0, 5.0));
+        for (OrientedPortal& p : c.portals)
+        {
+            const int axis = p.rect.axis;
+            p.rect.coordinate = offset[axis] + scale * p.rect.coordinate;
+            p.rect.uMin = offset[AxialRect::uAxis(axis)] + scale * p.rect.uMin;
+            p.rect.uMax = offset[AxialRect::uAxis(axis)] + scale * p.rect.uMax;
+            p.rect.vMin = offset[AxialRect::vAxis(axis)] + scale * p.rect.vMin;
+            p.rect.vMax = offset[AxialRect::vAxis(axis)] + scale * p.rect.vMax;
+        }
+        if (!portalSequenceStabbable(c.portals.data(), c.portals.size(), Tolerance * scale))
+        {
+            ++rejected;
+            ADD_FAILURE() << "trial " << trial << " rejected at scale " << scale;
+        }
+    }
+    EXPECT_EQ(rejected, 0);
+    // And the zig-zag is still rejected there.
+    std::vector<OrientedPortal> zigZag = {yDoor(0, 0, 1), yDoor(1, 5, 6), yDoor(2, 0, 1)};
+    for (OrientedPortal& p : zigZag)
+    {
+        p.rect.coordinate = offset.y + 1e3 * p.rect.coordinate;
+        p.rect.uMin = offset.z + 1e3 * p.rect.uMin;
+        p.rect.uMax = offset.z + 1e3 * p.rect.uMax;
+        p.rect.vMin = offset.x + 1e3 * p.rect.vMin;
+        p.rect.vMax = offset.x + 1e3 * p.rect.vMax;
+    }
+    EXPECT_FALSE(portalSequenceStabbable(zigZag.data(), zigZag.size(), Tolerance * 1e3));
+}
+
 TEST(PortalStabbing, RandomSightlinesAreNeverRejected)
 {
     RandomLines random(777);
@@ -276,7 +352,8 @@ TEST(PortalStabbing, RandomSightlinesAreNeverRejected)
                 n = glm::normalize(n - glm::dot(n, c.direction) * c.direction);
             viewPlanes.push_back(Plane::fromPointNormal(eye, n));
         }
-        if (count > 0 && !eyeSeesThroughPortals(eye, portals.data(), portals.size(), viewPlanes, Tolerance))
+        const double tolerance = (trial % 2 == 0) ? Tolerance : 0.0;
+        if (count > 0 && !eyeSeesThroughPortals(eye, portals.data(), portals.size(), viewPlanes, tolerance))
         {
             ++rejected;
             ADD_FAILURE() << "trial " << trial << " sightline rejected";
@@ -284,7 +361,7 @@ TEST(PortalStabbing, RandomSightlinesAreNeverRejected)
         const double lastParameter = count > 0 ? c.parameters[static_cast<std::size_t>(count) - 1] : 0.0;
         const Vec3 later = eye + (lastParameter + random.uniform(1e-3, 10.0)) * c.direction;
         const Aabb box = cubeAround(later, random.uniform(0.0, 1.0));
-        if (!eyeSeesBoxThroughPortals(eye, portals.data(), portals.size(), viewPlanes, box, Tolerance))
+        if (!eyeSeesBoxThroughPortals(eye, portals.data(), portals.size(), viewPlanes, box, tolerance))
         {
             ++boxRejected;
             ADD_FAILURE() << "trial " << trial << " box rejected";
@@ -458,4 +535,68 @@ TEST(PortalStabbing, LoosenessAgainstBruteForceLines)
     EXPECT_EQ(missed, 0);
     EXPECT_GT(bruteStabbed, 30);    // the generator makes enough stabbable sequences to mean something
     EXPECT_LT(accepted, sequences); // and the test rejects some
+    // Tightness with this seed: 5 accepted without a brute-force line (23 before the funnel check).
+    EXPECT_LE(accepted - bruteStabbed, 10);
+}
+
+TEST(PortalStabbing, QueriesAllocateNothingOnceWarm)
+{
+    const std::vector<OrientedPortal> doors = {yDoor(0, 0, 1), xDoor(2, 1, 2), yDoor(4, 2, 4), yDoor(6, 3, 5)};
+    const PortalFunnel funnel = portalFunnel(doors.data(), doors.size());
+    const std::vector<Plane> view = {Plane::fromPointNormal(Vec3(0.5, -1, 0.5), Vec3(1, 1, 0)),
+                                     Plane::fromPointNormal(Vec3(0.5, -1, 0.5), Vec3(-1, 1, 0))};
+    const Aabb box(Vec3(3, 7, 0), Vec3(4, 8, 1));
+    auto runAll = [&]
+    {
+        int answers = 0;
+        answers += stabbable(doors) ? 1 : 0;
+        answers += boxMeetsFunnel(box, funnel, Tolerance) ? 1 : 0;
+        answers += eyeSeesThroughPortals(Vec3(0.5, -1, 0.5), doors.data(), doors.size(), view, Tolerance) ? 1 : 0;
+        answers +=
+            eyeSeesBoxThroughPortals(Vec3(0.5, -1, 0.5), doors.data(), doors.size(), view, box, Tolerance) ? 1 : 0;
+        return answers;
+    };
+    const int warm = runAll();
+    const std::size_t before = osgVis::test::allocationCount();
+    int same = 0;
+    for (int i = 0; i < 100; ++i)
+        same += runAll() == warm ? 1 : 0;
+    EXPECT_EQ(osgVis::test::allocationCount(), before);
+    EXPECT_EQ(same, 100);
+}
+
+TEST(PortalStabbing, ThreadsGetTheSameAnswers)
+{
+    // Scratch buffers are per thread: concurrent queries answer as a single thread does.
+    RandomLines random(5);
+    std::vector<std::vector<OrientedPortal>> sequences;
+    for (int i = 0; i < 200; ++i)
+    {
+        std::vector<OrientedPortal> portals = random.make(3 + i % 4, 0.0).portals;
+        portals.back().rect.uMin += 0.5 * (i % 3); // some no longer stabbable
+        sequences.push_back(portals);
+    }
+    std::vector<char> expected;
+    int accepted = 0;
+    for (const auto& s : sequences)
+    {
+        expected.push_back(stabbable(s) ? 1 : 0);
+        accepted += expected.back();
+    }
+    EXPECT_GT(accepted, 0);
+    EXPECT_LT(accepted, 200);
+    std::vector<int> mismatches(4, 0);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t)
+        threads.emplace_back(
+            [&, t]
+            {
+                for (int rep = 0; rep < 5; ++rep)
+                    for (std::size_t i = 0; i < sequences.size(); ++i)
+                        mismatches[static_cast<std::size_t>(t)] += (stabbable(sequences[i]) ? 1 : 0) != expected[i];
+            });
+    for (std::thread& thread : threads)
+        thread.join();
+    for (int m : mismatches)
+        EXPECT_EQ(m, 0);
 }

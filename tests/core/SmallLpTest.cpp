@@ -27,6 +27,7 @@ TEST(SmallLp, TextbookOptimum)
     lp.addLessEqual(r2, 8);
     ASSERT_EQ(lp.maximize(), SmallLp::Status::Optimal);
     EXPECT_NEAR(lp.objectiveValue(), 13.0, 1e-12);
+    EXPECT_NEAR(lp.upperBound(), 13.0, 1e-12); // the duals (1, 0, 1) prove it
     EXPECT_NEAR(lp.solution(0), 2.0, 1e-12);
     EXPECT_NEAR(lp.solution(1), 0.0, 1e-12);
     EXPECT_NEAR(lp.solution(2), 1.0, 1e-12);
@@ -130,6 +131,7 @@ TEST(SmallLp, ManyRedundantRowsThroughOneVertex)
         lp.addLessEqual(diagonal, 1.0);
     ASSERT_EQ(lp.maximize(), SmallLp::Status::Optimal);
     EXPECT_NEAR(lp.objectiveValue(), std::sqrt(2.0), 1e-12);
+    EXPECT_NEAR(lp.upperBound(), std::sqrt(2.0), 1e-12);
 }
 
 TEST(SmallLp, EqualityRowsAndBounds)
@@ -149,6 +151,7 @@ TEST(SmallLp, EqualityRowsAndBounds)
     lp.addEqual(diff, 0);
     ASSERT_EQ(lp.maximize(), SmallLp::Status::Optimal);
     EXPECT_NEAR(lp.objectiveValue(), 2.25, 1e-12);
+    EXPECT_NEAR(lp.upperBound(), 2.25, 1e-12);
     EXPECT_NEAR(lp.solution(0), 0.25, 1e-12);
     EXPECT_NEAR(lp.solution(1), 0.25, 1e-12);
     EXPECT_NEAR(lp.solution(2), 0.5, 1e-12);
@@ -211,6 +214,8 @@ TEST(SmallLp, RandomProblemsMatchVertexEnumeration)
         {
             ASSERT_EQ(status, SmallLp::Status::Optimal) << trial;
             EXPECT_NEAR(lp.objectiveValue(), best, 1e-9) << trial;
+            EXPECT_GE(lp.upperBound(), best - 1e-12) << trial;
+            EXPECT_NEAR(lp.upperBound(), best, 1e-9) << trial;
         }
     }
 }

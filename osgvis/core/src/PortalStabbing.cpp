@@ -18,12 +18,32 @@ namespace
 // about 1): absorbs the rounding of the LP and of the plane construction.
 constexpr double NumericSlack = 1e-9;
 
+// The caller's tolerance plus what rounding may cost at this size and distance from the origin,
+// so that a tolerance of zero still accepts lines that exactly touch an edge.
+double withRounding(double tolerance, double size, double magnitude)
+{
+    const double base = tolerance > 0.0 ? tolerance : 0.0;
+    return base + NumericSlack * size + 1e-12 * magnitude;
+}
+
+double largestAbs(const Vec3& v)
+{
+    return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+}
+
 // Half-space n·x + d >= 0 with |n| = 1.
 struct HalfSpace
 {
     Vec3 n;
     double d;
 };
+
+// False only when the LP's optimum is certainly below `threshold`: judged by the dual bound,
+// which rounding in the simplex cannot make too low. Anything but a clean optimum is "maybe".
+bool lpMayReach(SmallLp& lp, double threshold)
+{
+    return lp.maximize() != SmallLp::Status::Optimal || lp.upperBound() >= threshold;
+}
 
 double travelSign(const OrientedPortal& p)
 {
@@ -174,10 +194,7 @@ bool pluckerFeasible(const OrientedPortal* portals, std::size_t count, const Fra
                     const double row[7] = {-moment.x, -moment.y, -moment.z, -e.x, -e.y, -e.z, 1.0};
                     lp.addLessEqual(row, 0.0);
                 }
-            const SmallLp::Status status = lp.maximize();
-            if (status != SmallLp::Status::Optimal && status != SmallLp::Status::Infeasible)
-                return true;
-            if (status == SmallLp::Status::Optimal && lp.objectiveValue() >= -1.5 * tol - NumericSlack)
+            if (lpMayReach(lp, -1.5 * tol - NumericSlack))
                 return true;
         }
     return false;
@@ -203,7 +220,6 @@ bool projectionFeasible(const OrientedPortal* portals, std::size_t count, const 
     thread_local std::vector<Segment> segments;
     segments.clear();
     const int xAxis = (dropped + 1) % 3;
-    const int yAxis = (dropped + 2) % 3;
     for (std::size_t i = 0; i < count; ++i)
     {
         const AxialRect& r = portals[i].rect;
@@ -275,11 +291,8 @@ bool projectionFeasible(const OrientedPortal* portals, std::size_t count, const 
                 lp.addLessEqual(leftRow, 0.0);
                 lp.addLessEqual(rightRow, 0.0);
             }
-            const SmallLp::Status status = lp.maximize();
-            if (status != SmallLp::Status::Optimal && status != SmallLp::Status::Infeasible)
-                return true;
             // |d| <= sqrt(2): a line missing an endpoint by δ has side >= -sqrt(2) δ.
-            if (status == SmallLp::Status::Optimal && lp.objectiveValue() >= -2.0 * tol - NumericSlack)
+            if (lpMayReach(lp, -2.0 * tol - NumericSlack))
                 return true;
         }
     return false;
@@ -327,10 +340,7 @@ bool boxMeetsHalfSpaces(const Aabb& box, const HalfSpace* halfSpaces, std::size_
         lp.setBounds(a, -half[a] / scale - tol, half[a] / scale + tol);
     lp.setBounds(3, -depth - tol, 0.0);
     lp.setObjective(3, 1.0);
-    const SmallLp::Status status = lp.maximize();
-    if (status != SmallLp::Status::Optimal)
-        return true;
-    return lp.objectiveValue() >= -tol - NumericSlack;
+    return lpMayReach(lp, -tol - NumericSlack);
 }
 
 bool unitHalfSpace(const Vec3& normal, double d, HalfSpace& out)
@@ -387,19 +397,94 @@ bool sightlineHalfSpaces(const Vec3& eye, const OrientedPortal* portals, std::si
     }
     return true;
 }
+// Appends the separating planes of `first` and `second` (through an edge of one and a vertex of
+// the other, with the two on opposite sides), oriented to keep `second`. A line meeting first and
+// then second has a plane value that grows along it, so every point beyond second keeps >= 0.
+void appendSeparatingPlanes(const AxialRect& first, const AxialRect& second, double scale, std::vector<HalfSpace>& out)
+{
+    const double eps = 1e-10 * scale;
+    Vec3 corners[2][4];
+    for (int c = 0; c < 4; ++c)
+    {
+        corners[0][c] = first.corner(c);
+        corners[1][c] = second.corner(c);
+    }
+    for (int edgeOwner = 0; edgeOwner < 2; ++edgeOwner)
+        for (int k = 0; k < 4; ++k)
+        {
+            const Vec3& a = corners[edgeOwner][k];
+            const Vec3 edge = corners[edgeOwner][(k + 1) % 4] - a;
+            const double edgeLength = glm::length(edge);
+            if (!(edgeLength > eps))
+                continue;
+            for (int v = 0; v < 4; ++v)
+            {
+                const Vec3 n = glm::cross(edge, corners[1 - edgeOwner][v] - a);
+                const double length = glm::length(n);
+                if (!(length > 1e-12 * edgeLength * scale))
+                    continue;
+                const Vec3 unit = n / length;
+                double minFirst = 1e300, maxFirst = -1e300, minSecond = 1e300, maxSecond = -1e300;
+                for (int c = 0; c < 4; ++c)
+                {
+                    const double f = glm::dot(unit, corners[0][c] - a);
+                    const double g = glm::dot(unit, corners[1][c] - a);
+                    minFirst = std::min(minFirst, f);
+                    maxFirst = std::max(maxFirst, f);
+                    minSecond = std::min(minSecond, g);
+                    maxSecond = std::max(maxSecond, g);
+                }
+                const bool allOnPlane = maxFirst <= eps && minFirst >= -eps && maxSecond <= eps && minSecond >= -eps;
+                if (allOnPlane)
+                    continue;
+                if (maxFirst <= eps && minSecond >= -eps)
+                    out.push_back({unit, -glm::dot(unit, a)});
+                else if (minFirst >= -eps && maxSecond <= eps)
+                    out.push_back({-unit, glm::dot(unit, a)});
+            }
+        }
+}
+
+// Teller's funnel test: the last portal must meet the funnel (separating planes and portal planes)
+// of those before it, since a stabbing line crosses it beyond all of them. Only the last portal
+// is tested: the bake extends sequences one portal at a time, so shorter prefixes were checked.
+bool lastPortalMeetsFunnel(const OrientedPortal* portals, std::size_t count, double scale, double tolerance)
+{
+    thread_local std::vector<HalfSpace> halfSpaces;
+    halfSpaces.clear();
+    const std::size_t before = count - 1;
+    for (std::size_t i = 0; i < before; ++i)
+    {
+        Vec3 normal{0.0};
+        const double sign = travelSign(portals[i]);
+        normal[portals[i].rect.axis] = sign;
+        halfSpaces.push_back({normal, -sign * portals[i].rect.coordinate});
+        for (std::size_t j = i + 1; j < before; ++j)
+            appendSeparatingPlanes(portals[i].rect, portals[j].rect, scale, halfSpaces);
+    }
+    return boxMeetsHalfSpaces(portals[before].rect.bounds(), halfSpaces.data(), halfSpaces.size(), tolerance);
+}
+
 } // namespace
 
 bool portalSequenceStabbable(const OrientedPortal* portals, std::size_t count, double tolerance)
 {
     if (count <= 1)
         return true;
+    Aabb extent;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        if (!finiteRect(portals[i].rect))
+            return true; // nothing certain about unusable input
+        extent.expand(portals[i].rect.bounds());
+    }
+    tolerance =
+        withRounding(tolerance, largestAbs(extent.extent()), std::max(largestAbs(extent.min), largestAbs(extent.max)));
     thread_local std::vector<OrientedPortal> fixed;
     fixed.clear();
     for (std::size_t i = 0; i < count; ++i)
     {
         const AxialRect& r = portals[i].rect;
-        if (!finiteRect(r))
-            return true; // nothing certain about unusable input
         if (r.uMax < r.uMin - tolerance || r.vMax < r.vMin - tolerance)
             return false; // an empty portal lets no line through
         fixed.push_back(repaired(portals[i]));
@@ -413,7 +498,9 @@ bool portalSequenceStabbable(const OrientedPortal* portals, std::size_t count, d
     for (int dropped = 0; dropped < 3; ++dropped)
         if (!projectionFeasible(fixed.data(), count, frame, dropped, tol))
             return false;
-    return pluckerFeasible(fixed.data(), count, frame, tol);
+    if (!pluckerFeasible(fixed.data(), count, frame, tol))
+        return false;
+    return count < 3 || lastPortalMeetsFunnel(fixed.data(), count, frame.scale, tolerance);
 }
 
 PortalFunnel portalFunnel(const OrientedPortal* portals, std::size_t count)
@@ -423,7 +510,6 @@ PortalFunnel portalFunnel(const OrientedPortal* portals, std::size_t count)
         return funnel;
     Frame frame;
     frameOf(portals, count, frame);
-    const double eps = 1e-10 * std::max(frame.scale, 1e-300);
     auto addUnique = [&](const Vec3& normal, double d)
     {
         for (const Plane& p : funnel.planes)
@@ -440,53 +526,21 @@ PortalFunnel portalFunnel(const OrientedPortal* portals, std::size_t count)
         normal[portals[i].rect.axis] = sign;
         addUnique(normal, -sign * portals[i].rect.coordinate);
     }
-    // Separating planes of every ordered pair (i before j): i on the negative side, j on the
-    // positive side. A line meets i then j, so the plane's value grows along it and stays >= 0
-    // beyond j.
+    thread_local std::vector<HalfSpace> separating;
+    separating.clear();
     for (std::size_t i = 0; i < count; ++i)
         for (std::size_t j = i + 1; j < count; ++j)
-            for (int edgeOwner = 0; edgeOwner < 2; ++edgeOwner)
-            {
-                const AxialRect& withEdge = portals[edgeOwner == 0 ? i : j].rect;
-                const AxialRect& withVertex = portals[edgeOwner == 0 ? j : i].rect;
-                for (int k = 0; k < 4; ++k)
-                {
-                    const Vec3 a = withEdge.corner(k);
-                    const Vec3 edge = withEdge.corner((k + 1) % 4) - a;
-                    if (!(glm::length(edge) > eps))
-                        continue;
-                    for (int v = 0; v < 4; ++v)
-                    {
-                        const Vec3 n = glm::cross(edge, withVertex.corner(v) - a);
-                        const double length = glm::length(n);
-                        if (!(length > 1e-12 * glm::length(edge) * frame.scale))
-                            continue;
-                        const Vec3 unit = n / length;
-                        double minI = 1e300, maxI = -1e300, minJ = 1e300, maxJ = -1e300;
-                        for (int c = 0; c < 4; ++c)
-                        {
-                            const double fi = glm::dot(unit, portals[i].rect.corner(c) - a);
-                            const double fj = glm::dot(unit, portals[j].rect.corner(c) - a);
-                            minI = std::min(minI, fi);
-                            maxI = std::max(maxI, fi);
-                            minJ = std::min(minJ, fj);
-                            maxJ = std::max(maxJ, fj);
-                        }
-                        const bool allOnPlane = maxI <= eps && minI >= -eps && maxJ <= eps && minJ >= -eps;
-                        if (allOnPlane)
-                            continue;
-                        if (maxI <= eps && minJ >= -eps)
-                            addUnique(unit, -glm::dot(unit, a));
-                        else if (minI >= -eps && maxJ <= eps)
-                            addUnique(-unit, glm::dot(unit, a));
-                    }
-                }
-            }
+            appendSeparatingPlanes(portals[i].rect, portals[j].rect, frame.scale, separating);
+    for (const HalfSpace& h : separating)
+        addUnique(h.n, h.d);
     return funnel;
 }
 
 bool boxMeetsFunnel(const Aabb& box, const PortalFunnel& funnel, double tolerance)
 {
+    if (box.empty())
+        return false;
+    tolerance = withRounding(tolerance, largestAbs(box.extent()), std::max(largestAbs(box.min), largestAbs(box.max)));
     thread_local std::vector<HalfSpace> halfSpaces;
     halfSpaces.clear();
     for (const Plane& plane : funnel.planes)
@@ -508,6 +562,9 @@ bool eyeSeesThroughPortals(const Vec3& eye, const OrientedPortal* portals, std::
     const OrientedPortal& last = portals[count - 1];
     if (!finiteRect(last.rect))
         return true;
+    const Aabb lastBounds = last.rect.bounds();
+    tolerance = withRounding(tolerance, largestAbs(lastBounds.extent()) + glm::length(lastBounds.center() - eye),
+                             std::max(largestAbs(eye), largestAbs(lastBounds.center())));
     if (last.rect.uMax < last.rect.uMin - tolerance || last.rect.vMax < last.rect.vMin - tolerance)
         return false;
     if (travelSign(last) * (eye[last.rect.axis] - last.rect.coordinate) > tolerance)
@@ -521,6 +578,10 @@ bool eyeSeesBoxThroughPortals(const Vec3& eye, const OrientedPortal* portals, st
                               const std::vector<Plane>& viewPlanes, const Aabb& box, double tolerance)
 {
     thread_local std::vector<HalfSpace> halfSpaces;
+    if (box.empty())
+        return false;
+    tolerance = withRounding(tolerance, largestAbs(box.extent()) + glm::length(box.center() - eye),
+                             std::max(largestAbs(eye), largestAbs(box.center())));
     for (std::size_t i = 0; i < count; ++i)
     {
         const AxialRect& r = portals[i].rect;

@@ -9,8 +9,10 @@ namespace osgVis::core
 namespace
 {
 // Pivot elements and reduced costs below this are treated as zero (coefficients are ~1).
-constexpr double PivotEpsilon = 1e-11;
+constexpr double PivotEpsilon = 1e-9;
 constexpr double CostEpsilon = 1e-11;
+// Harris' ratio-test slack: rows this close to the minimum ratio compete on pivot size.
+constexpr double RatioSlack = 1e-9;
 } // namespace
 
 void SmallLp::reset(int variableCount)
@@ -90,47 +92,97 @@ bool SmallLp::iterate(int objectiveRow, bool allowArtificial)
     const int rhs = _width - 1;
     const int limit = 50 * (_m + _width) + 100;
     const double* objective = &_t[static_cast<std::size_t>(objectiveRow) * _width];
+    bool bland = false;
+    int degenerate = 0;
     for (int iteration = 0; iteration < limit; ++iteration)
     {
-        // Bland: the entering variable is the improving one of smallest index...
+        // Entering: the most improving column, or under Bland the improving one of smallest index.
         int column = -1;
         for (int j = 0; j < rhs; ++j)
         {
             const int variable = _nonbasic[static_cast<std::size_t>(j)];
-            if (!allowArtificial && variable == auxiliary)
+            if ((!allowArtificial && variable == auxiliary) || !(objective[j] < -CostEpsilon))
                 continue;
-            if (objective[j] < -CostEpsilon && (column < 0 || variable < _nonbasic[static_cast<std::size_t>(column)]))
+            if (column < 0 ||
+                (bland ? variable < _nonbasic[static_cast<std::size_t>(column)] : objective[j] < objective[column]))
                 column = j;
         }
         if (column < 0)
             return true;
-        // ...and so is the leaving one among ties of the ratio test.
-        int row = -1;
-        double bestRatio = 0.0;
+        // Leaving: the smallest ratio (rows slightly infeasible from rounding count as zero)...
+        auto at = [&](int i, int j) { return _t[static_cast<std::size_t>(i) * _width + j]; };
+        double bestRatio = Infinity;
         for (int i = 0; i < _m; ++i)
         {
-            const double a = _t[static_cast<std::size_t>(i) * _width + column];
-            if (a <= PivotEpsilon)
-                continue;
-            const double ratio = std::max(0.0, _t[static_cast<std::size_t>(i) * _width + rhs]) / a;
-            if (row < 0 || ratio < bestRatio ||
-                (ratio == bestRatio && _basic[static_cast<std::size_t>(i)] < _basic[static_cast<std::size_t>(row)]))
-            {
-                row = i;
-                bestRatio = ratio;
-            }
+            const double a = at(i, column);
+            if (a > PivotEpsilon)
+                bestRatio = std::min(bestRatio, (std::max(0.0, at(i, rhs)) + (bland ? 0.0 : RatioSlack)) / a);
         }
-        if (row < 0)
+        if (bestRatio == Infinity)
             return false;
+        // ...among the rows within Harris' slack of it the largest pivot, or under Bland the
+        // exact ties' smallest basic index.
+        int row = -1;
+        for (int i = 0; i < _m; ++i)
+        {
+            const double a = at(i, column);
+            if (!(a > PivotEpsilon) || std::max(0.0, at(i, rhs)) / a > bestRatio)
+                continue;
+            if (row < 0 || (bland ? _basic[static_cast<std::size_t>(i)] < _basic[static_cast<std::size_t>(row)]
+                                  : a > at(row, column)))
+                row = i;
+        }
+        const double before = objective[rhs];
         pivot(row, column);
+        if (objective[rhs] <= before + CostEpsilon && ++degenerate > 2 * _width)
+            bland = true;
     }
     _iterationLimitHit = true;
     return true;
 }
 
+void SmallLp::computeUpperBound()
+{
+    // Row duals: the objective row's entries in the columns of nonbasic slacks.
+    const std::size_t rows = _rowRhs.size();
+    _y.assign(rows, 0.0);
+    const double* objective = &_t[static_cast<std::size_t>(_m) * _width];
+    for (int j = 0; j + 1 < _width; ++j)
+    {
+        const int variable = _nonbasic[static_cast<std::size_t>(j)];
+        if (variable >= _columns && variable < _columns + static_cast<int>(rows))
+            _y[static_cast<std::size_t>(variable - _columns)] = std::max(0.0, objective[j]);
+    }
+    double bound = 0.0;
+    for (std::size_t k = 0; k < rows; ++k)
+        bound += _y[k] * _rowRhs[k];
+    for (int i = 0; i < _n; ++i)
+    {
+        double reduced = _c[i];
+        double magnitude = std::fabs(_c[i]);
+        for (std::size_t k = 0; k < rows; ++k)
+        {
+            const double term =
+                _y[k] * _rowCoefficients[k * static_cast<std::size_t>(_n) + static_cast<std::size_t>(i)];
+            reduced -= term;
+            magnitude += std::fabs(term);
+        }
+        // note: against an infinite bound, a reduced cost within rounding of zero counts as zero;
+        // with finite bounds (as the portal tests use) the bound stays exact.
+        if (!std::isfinite(reduced > 0.0 ? _hi[i] : _lo[i]) && std::fabs(reduced) <= 1e-12 * magnitude)
+            continue;
+        if (reduced > 0.0)
+            bound += reduced * _hi[i]; // +inf when unbounded above
+        else if (reduced < 0.0)
+            bound += reduced * _lo[i];
+    }
+    _upperBound = std::isnan(bound) ? Infinity : bound;
+}
+
 SmallLp::Status SmallLp::maximize()
 {
     _iterationLimitHit = false;
+    _upperBound = Infinity;
     // Variables to columns y >= 0.
     _columns = 0;
     int boundRows = 0;
@@ -256,6 +308,7 @@ SmallLp::Status SmallLp::maximize()
         if (_basic[static_cast<std::size_t>(i)] < _columns)
             _y[static_cast<std::size_t>(_basic[static_cast<std::size_t>(i)])] =
                 std::max(0.0, _t[static_cast<std::size_t>(i) * _width + rhs]);
+    // note: _y holds the columns' values here, the row duals after computeUpperBound().
     _value = 0.0;
     for (int i = 0; i < _n; ++i)
     {
@@ -263,6 +316,7 @@ SmallLp::Status SmallLp::maximize()
         _x[i] = _split[i] ? y - _y[static_cast<std::size_t>(_columnOf[i] + 1)] : _offset[i] + _sign[i] * y;
         _value += _c[i] * _x[i];
     }
+    computeUpperBound();
     return Status::Optimal;
 }
 } // namespace osgVis::core

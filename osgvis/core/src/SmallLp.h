@@ -1,10 +1,11 @@
 #pragma once
 // A small dense linear program: maximize c·x subject to A x <= b, equality rows and variable
 // bounds, for a handful of variables (<= 8) and up to a few hundred rows. Dictionary simplex
-// (Chvátal, "Linear Programming", ch. 2-3) with Bland's rule so degenerate problems cannot cycle,
-// and an auxiliary variable for the first phase. Buffers are kept between solves, so a reused
-// solver allocates nothing once warm. Coefficients should be of order one (callers normalise);
-// the pivot tolerance is absolute.
+// (Chvátal, "Linear Programming", ch. 2-3) with an auxiliary variable for the first phase. Pivots
+// take the largest reduced cost and, among rows nearly tied in the ratio test, the largest pivot
+// (Harris) for accuracy; after a run of degenerate pivots the rules become Bland's, which cannot
+// cycle. Buffers are kept between solves, so a reused solver allocates nothing once warm.
+// Coefficients should be of order one (callers normalise); the pivot tolerance is absolute.
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -38,6 +39,11 @@ public:
     Status maximize();
     // Valid after Optimal.
     double objectiveValue() const { return _value; }
+    // After Optimal: an upper bound on the true optimum from the final row duals y >= 0 and the
+    // original data alone (c·x = yA·x + (c - yA)·x <= y·b + max over the bounds of (c - yA)·x),
+    // so it holds whatever rounding did to the tableau. Callers that decide "infeasible for
+    // this threshold" must compare this, not objectiveValue(). +Infinity when no bound follows.
+    double upperBound() const { return _upperBound; }
     double solution(int variable) const { return _x[static_cast<std::size_t>(variable)]; }
 
     int variableCount() const { return _n; }
@@ -74,7 +80,10 @@ private:
     std::vector<double> _y;
     bool _iterationLimitHit = false;
 
+    void computeUpperBound();
+
     double _value = 0.0;
+    double _upperBound = Infinity;
     double _x[MaxVariables] = {};
 };
 } // namespace osgVis::core
