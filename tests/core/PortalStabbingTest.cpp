@@ -263,9 +263,10 @@ TEST(PortalStabbing, RandomSequencesAroundLinesAreNeverRejected)
 
 TEST(PortalStabbing, IllConditionedSequencesFoundByStressRuns)
 {
-    // Long chains of 1e-3 portals around one line, where the simplex's tableau once lost accuracy
-    // and reported a too low optimum (first case: the Plücker LP; second: the funnel LP). The
-    // answers now rest on the LP's dual bound, which rounding cannot lower.
+    // Long chains of 1e-3 portals around one line, found by a 200k-case stress run, where the
+    // simplex (then pivoting on small elements) lost accuracy and reported too low an optimum
+    // (first case: the Plücker LP; second: the funnel LP). Harris pivoting keeps them accurate,
+    // and rejection rests on the LP's dual bound, which rounding cannot lower.
     const std::vector<OrientedPortal> pluckerCase = {
         portal(0, 5.1757530213548222, -0.81702165486498368, -0.81602165486498368, 2.7457450713090692,
                2.7509960901562835),
