@@ -32,10 +32,11 @@ double parseNumber(const std::string& flag, const std::string& text, double lo, 
         text.find_first_of(" \t") != std::string::npos)
         throw UsageError(flag + " expects a number, got '" + text + "'");
     if (value < lo || value > hi)
-        throw UsageError(flag + " must lie between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got '" +
+        throw UsageError(flag + " must lie between " + shortNumber(lo) + " and " + shortNumber(hi) + ", got '" +
                          text + "'");
     return value;
 }
+
 // Shortest decimal form: 0.3 and 0.0001 rather than std::to_string's 0.300000 and 0.000100.
 std::string shortNumber(double value)
 {

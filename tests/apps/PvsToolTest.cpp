@@ -1,0 +1,159 @@
+// osgvispvs end to end: bakes a small generated office into a .pvs that decodes, prints and writes
+// the bake's statistics, and refuses bad input with a message naming the thing and the documented
+// exit status (1: files and scenes, 2: command line).
+#include "AppProcess.h"
+#include "BadModelFiles.h"
+#include "BenchJson.h"
+
+#include <osgVis/core/PvsFormat.h>
+#include <osgVis/gen/Generator.h>
+
+#include <osgDB/WriteFile>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace fs = std::filesystem;
+using namespace osgVis::test;
+
+namespace
+{
+AppRun osgvispvs(const std::string& arguments)
+{
+    return runApp(OSGVISPVS_EXE, arguments);
+}
+
+// The office osgvisgen writes for --kind office --triangles 2000, in a fresh scratch folder.
+fs::path writeSmallOffice()
+{
+    const fs::path dir = scratchDirectory("apps", ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    osgVis::gen::GenerateOptions options;
+    options.kind = osgVis::gen::SceneKind::Office;
+    options.triangles = 2000;
+    const fs::path model = dir / "office.osgb";
+    EXPECT_TRUE(osgDB::writeNodeFile(*osgVis::gen::generate(options).root, model.string()));
+    return model;
+}
+
+std::string quoted(const fs::path& path)
+{
+    return "'" + path.string() + "'";
+}
+
+// The number printed after `label` on its line of the statistics.
+std::string printedAfter(const std::string& output, const std::string& label)
+{
+    const std::size_t at = output.find(label);
+    if (at == std::string::npos)
+        return "";
+    std::size_t from = output.find_first_not_of(' ', at + label.size());
+    const std::size_t to = output.find_first_not_of("0123456789.", from);
+    return output.substr(from, to - from);
+}
+
+void expectFailure(const std::string& arguments, int exitCode, const std::string& message)
+{
+    const AppRun run = osgvispvs(arguments);
+    EXPECT_EQ(run.exitCode, exitCode) << arguments << " printed:\n" << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << arguments << " printed:\n" << run.output;
+}
+} // namespace
+
+TEST(PvsTool, BakesASmallOfficeAndReportsItsStatistics)
+{
+    const fs::path model = writeSmallOffice();
+    const fs::path pvs = model.parent_path() / "office.pvs", json = model.parent_path() / "office.json";
+    const AppRun run = osgvispvs(quoted(model) + " -o " + quoted(pvs) + " --threads 2 --json " + quoted(json));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+
+    const osgVis::core::PvsFile file = osgVis::core::readPvsFile(pvs.string());
+    EXPECT_EQ(file.modelPath, "office.osgb");
+    const osgVis::core::CellPortalData& data = file.data;
+    ASSERT_GT(data.graph.cells.size(), 1u);
+    ASSERT_EQ(data.sources.size(), data.graph.cells.size());
+    std::uint64_t stabNodes = 0;
+    for (const auto& source : data.sources)
+        stabNodes += source.stabTree.size();
+
+    EXPECT_EQ(printedAfter(run.output, "cells:"), std::to_string(data.graph.cells.size())) << run.output;
+    EXPECT_EQ(printedAfter(run.output, "portals:"), std::to_string(data.graph.portals.size())) << run.output;
+    EXPECT_EQ(printedAfter(run.output, "stab-tree nodes:"), std::to_string(stabNodes)) << run.output;
+    for (const char* label : {"average visible cells:", "average PVS:", "search budget hit:", "bake time:"})
+        EXPECT_FALSE(printedAfter(run.output, label).empty()) << label << " in\n" << run.output;
+    EXPECT_NE(run.output.find("% of the model"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("baked " + std::to_string(data.graph.cells.size()) + " cells in"), std::string::npos);
+    // stderr is no terminal here: no bar, only the closing line.
+    EXPECT_EQ(run.output.find("baking ["), std::string::npos) << run.output;
+
+    const std::string text = readText(json);
+    EXPECT_EQ(numberField(text, "cells"), double(data.graph.cells.size())) << text;
+    EXPECT_EQ(numberField(text, "portals"), double(data.graph.portals.size())) << text;
+    EXPECT_EQ(numberField(text, "stab_nodes"), double(stabNodes)) << text;
+    EXPECT_EQ(numberField(text, "objects"), double(data.objectCount)) << text;
+    EXPECT_EQ(numberField(text, "file_bytes"), double(fs::file_size(pvs))) << text;
+    EXPECT_EQ(numberField(text, "threads"), 2.0) << text;
+    for (const char* key : {"average_visible_cells", "average_pvs_fraction", "budget_exceeded_cells", "bake_seconds"})
+        EXPECT_TRUE(hasKey(text, key)) << key;
+}
+
+TEST(PvsTool, NamesTheModelRelativeToThePvsAndDrawsTheBarWhenAsked)
+{
+    const fs::path model = writeSmallOffice();
+    fs::create_directories(model.parent_path() / "baked");
+    const fs::path pvs = model.parent_path() / "baked" / "office.pvs";
+    const AppRun run = osgvispvs(quoted(model) + " -o " + quoted(pvs) + " --progress --max-cells 64 --stab-budget 500");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("baking ["), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("100%"), std::string::npos) << run.output;
+    const osgVis::core::PvsFile file = osgVis::core::readPvsFile(pvs.string());
+    EXPECT_EQ(file.modelPath, "../office.osgb");
+    EXPECT_LE(file.data.graph.cells.size(), 64u);
+}
+
+TEST(PvsTool, RefusesBadInputNamingIt)
+{
+    const fs::path dir = scratchDirectory("apps", "PvsToolErrors");
+    const fs::path out = dir / "x.pvs";
+    const std::string o = " -o " + quoted(out);
+    // Command line: exit 2.
+    expectFailure("", 2, "missing the model to bake");
+    expectFailure(quoted(dir / "m.osgb"), 2, "missing output path (-o OUT.pvs)");
+    expectFailure(quoted(dir / "m.osgb") + " -o", 2, "-o needs a value");
+    expectFailure("m.osgb --max-cells lots" + o, 2, "--max-cells expects a non-negative integer, got 'lots'");
+    expectFailure("m.osgb --threads -1" + o, 2, "--threads expects a non-negative integer, got '-1'");
+    expectFailure("m.osgb --stab-budget 0" + o, 2, "--stab-budget must lie between 1 and");
+    expectFailure("m.osgb --min-coverage 1.5" + o, 2, "--min-coverage must lie between 0 and 1, got '1.5'");
+    expectFailure("m.osgb --min-coverage 0.3x" + o, 2, "--min-coverage expects a number, got '0.3x'");
+    expectFailure("m.osgb --min-face-area nan" + o, 2, "--min-face-area expects a number, got 'nan'");
+    expectFailure("m.osgb --min-cell-size -0.1" + o, 2, "--min-cell-size must lie between 0 and 1");
+    expectFailure("m.osgb --frobnicate" + o, 2, "unknown argument '--frobnicate'");
+    expectFailure("a.osgb b.osgb" + o, 2, "one model only");
+
+    // Files and scenes: exit 1.
+    expectFailure(quoted(dir / "missing.osgb") + o, 1, "model file '" + (dir / "missing.osgb").string() + "' does not exist");
+    const fs::path garbage = writeGarbageModel(dir);
+    expectFailure(quoted(garbage) + o, 1, "cannot read model '" + garbage.string() + "'");
+    const fs::path empty = writeEmptyModel(dir);
+    expectFailure(quoted(empty) + o, 1, "model '" + empty.string() + "' holds no drawable objects");
+    expectFailure(quoted(empty) + " -o /nonexistent-osgvis-dir/x.pvs", 1,
+                  "cannot write the .pvs file '/nonexistent-osgvis-dir/x.pvs': folder '/nonexistent-osgvis-dir' does not exist");
+    expectFailure(quoted(empty) + " -o " + quoted(dir), 1, "it is a folder");
+    expectFailure(quoted(empty) + o + " --json /nonexistent-osgvis-dir/s.json", 1,
+                  "cannot write the JSON file '/nonexistent-osgvis-dir/s.json'");
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(PvsTool, HelpAndVersionTellTheTruth)
+{
+    const AppRun help = osgvispvs("--help");
+    EXPECT_EQ(help.exitCode, 0);
+    for (const char* option : {"-o, --output", "--min-coverage", "--min-face-area", "--min-cell-size", "--max-cells",
+                               "--stab-budget", "--threads", "0 = all cores", "--json", "--progress", "--version",
+                               "(default 0.3)", "(default 50000)"})
+        EXPECT_NE(help.output.find(option), std::string::npos) << option << " in\n" << help.output;
+    const AppRun version = osgvispvs("--version");
+    EXPECT_EQ(version.exitCode, 0);
+    EXPECT_NE(version.output.find("osgVis 0.1.0"), std::string::npos) << version.output;
+}
