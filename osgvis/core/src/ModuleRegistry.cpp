@@ -1,5 +1,6 @@
 #include <osgVis/core/ModuleRegistry.h>
 
+#include <osgVis/core/CellPortalModule.h>
 #include <osgVis/core/FrustumModule.h>
 #include <osgVis/core/OctreeModule.h>
 
@@ -22,6 +23,14 @@ struct Registry
             single.fuseConnected = false;
             return std::make_unique<OctreeModule>(single);
         };
+        const std::pair<const char*, CellPortalStage> cellPortalStages[] = {
+            {"cellportal", CellPortalStage::EyeToObject},
+            {"cellportal-cells", CellPortalStage::CellToCell},
+            {"cellportal-pvs", CellPortalStage::CellToObject},
+            {"cellportal-eyecells", CellPortalStage::EyeToCell},
+        };
+        for (const auto& [name, stage] : cellPortalStages)
+            factories[name] = [stage = stage] { return std::make_unique<CellPortalModule>(stage); };
     }
 
     std::mutex mutex;

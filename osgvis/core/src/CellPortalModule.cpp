@@ -1,0 +1,262 @@
+#include <osgVis/core/CellPortalModule.h>
+
+#include <osgVis/core/PortalStabbing.h>
+
+#include "CellObjects.h"
+
+#include <map>
+#include <mutex>
+
+namespace osgVis::core
+{
+namespace
+{
+struct BakedStore
+{
+    std::mutex mutex;
+    std::map<std::uint64_t, std::shared_ptr<const CellPortalData>> byFingerprint;
+};
+
+BakedStore& bakedStore()
+{
+    static BakedStore store;
+    return store;
+}
+
+const char* stageName(CellPortalStage stage)
+{
+    switch (stage)
+    {
+    case CellPortalStage::CellToCell: return "cellportal-cells";
+    case CellPortalStage::CellToObject: return "cellportal-pvs";
+    case CellPortalStage::EyeToCell: return "cellportal-eyecells";
+    case CellPortalStage::EyeToObject: break;
+    }
+    return "cellportal";
+}
+} // namespace
+
+void registerBakedCellPortalData(std::shared_ptr<const CellPortalData> data)
+{
+    if (!data)
+        return;
+    BakedStore& store = bakedStore();
+    const std::lock_guard<std::mutex> lock(store.mutex);
+    store.byFingerprint[data->fingerprint] = std::move(data);
+}
+
+std::shared_ptr<const CellPortalData> findBakedCellPortalData(std::uint64_t fingerprint)
+{
+    BakedStore& store = bakedStore();
+    const std::lock_guard<std::mutex> lock(store.mutex);
+    const auto found = store.byFingerprint.find(fingerprint);
+    return found == store.byFingerprint.end() ? nullptr : found->second;
+}
+
+struct CellPortalModule::Impl
+{
+    CellPortalStage stage;
+    BakeOptions bake;
+    std::shared_ptr<const CellPortalData> given;
+    std::shared_ptr<const CellPortalData> data;
+    bool bakedOnTheSpot = false;
+    CellObjects objects;
+    std::vector<Aabb> objectBounds;
+    double tolerance = 0.0;
+    DebugRecord* record = nullptr;
+
+    // The eye's source cell, cached while the eye stays in it: each stab-tree node's portal as it
+    // is crossed and the node's depth, so a query walks the tree without touching the graph.
+    struct SourceCache
+    {
+        std::uint32_t cell = NoCell;
+        std::vector<OrientedPortal> portals;
+        std::vector<std::uint32_t> depths;
+    };
+    std::vector<SourceCache> caches; // one per cell the eye touches (several on a boundary)
+
+    // Per-query scratch.
+    VisibleSet kept;
+    std::vector<std::uint32_t> eyeCells;
+    std::vector<OrientedPortal> sequence;
+    std::vector<Plane> viewPlanes;
+
+    bool usable(const CellPortalData& candidate, const Scene& scene, std::uint64_t fingerprint) const
+    {
+        return candidate.fingerprint == fingerprint && candidate.objectCount == scene.objects.size() &&
+               candidate.sources.size() == candidate.graph.cells.size();
+    }
+
+    const SourceCache& cacheFor(std::uint32_t cell, std::size_t slot)
+    {
+        if (caches.size() <= slot)
+            caches.resize(slot + 1);
+        SourceCache& cache = caches[slot];
+        if (cache.cell == cell)
+            return cache;
+        cache.cell = cell;
+        const std::vector<StabNode>& tree = data->sources[cell].stabTree;
+        cache.portals.resize(tree.size());
+        cache.depths.resize(tree.size());
+        for (std::size_t i = 0; i < tree.size(); ++i)
+        {
+            const StabNode& node = tree[i];
+            const CellPortal& portal = data->graph.portals[node.portal];
+            cache.portals[i] = {portal.rect, node.cell == portal.highCell};
+            cache.depths[i] = node.parent == NoStabParent ? 1u : cache.depths[node.parent] + 1u;
+        }
+        return cache;
+    }
+
+    void keepCellObjects(std::uint32_t cell)
+    {
+        for (ObjectId id : objects.perCell[cell])
+            kept.set(id);
+    }
+
+    // Objects of `cell` in the source's PVS that a sightline from the eye through `sequence` reaches.
+    void keepSeenObjects(const Vec3& eye, std::uint32_t cell, const VisibleSet& pvs)
+    {
+        for (ObjectId id : objects.perCell[cell])
+        {
+            if (kept.test(id) || !pvs.test(id))
+                continue;
+            const Aabb part = clippedToCell(objectBounds[id], data->graph.cells[cell], tolerance);
+            if (eyeSeesBoxThroughPortals(eye, sequence.data(), sequence.size(), viewPlanes, part, tolerance))
+                kept.set(id);
+        }
+    }
+
+    void recordCell(std::uint32_t cell, NodeState state, std::uint32_t depth)
+    {
+        if (record)
+            record->nodes.push_back({data->graph.cells[cell], state, depth});
+    }
+
+    // Eye-to-cell: the source's stab tree walked depth first, a subtree skipped as soon as no
+    // sightline through the eye passes its sequence.
+    void walkStabTree(const Vec3& eye, std::uint32_t source, std::size_t slot)
+    {
+        const SourceCellVisibility& visibility = data->sources[source];
+        const SourceCache& cache = cacheFor(source, slot);
+        const bool objectsToo = stage == CellPortalStage::EyeToObject;
+        sequence.clear();
+        if (objectsToo)
+            keepSeenObjects(eye, source, visibility.cellToObject);
+        else
+            keepCellObjects(source);
+        recordCell(source, NodeState::Visible, 0);
+        const std::vector<StabNode>& tree = visibility.stabTree;
+        for (std::size_t i = 0; i < tree.size();)
+        {
+            const std::uint32_t depth = cache.depths[i];
+            sequence.resize(depth - 1);
+            sequence.push_back(cache.portals[i]);
+            if (!eyeSeesThroughPortals(eye, sequence.data(), sequence.size(), viewPlanes, tolerance))
+            {
+                i = tree[i].subtreeEnd;
+                continue;
+            }
+            if (record)
+                record->activeOccluders.push_back({cache.portals[i].rect.corner(0), cache.portals[i].rect.corner(1),
+                                                   cache.portals[i].rect.corner(2), cache.portals[i].rect.corner(3)});
+            recordCell(tree[i].cell, NodeState::Visible, depth);
+            if (objectsToo)
+                keepSeenObjects(eye, tree[i].cell, visibility.cellToObject);
+            else
+                keepCellObjects(tree[i].cell);
+            ++i;
+        }
+    }
+
+    void cullFromCell(const Vec3& eye, std::uint32_t source, std::size_t slot)
+    {
+        const SourceCellVisibility& visibility = data->sources[source];
+        const bool eyeStage = stage == CellPortalStage::EyeToCell || stage == CellPortalStage::EyeToObject;
+        if (eyeStage && !visibility.budgetExceeded)
+        {
+            walkStabTree(eye, source, slot);
+            return;
+        }
+        if (stage == CellPortalStage::CellToCell)
+        {
+            for (std::uint32_t cell = 0; cell < data->graph.cells.size(); ++cell)
+                if (visibility.cellToCell.test(cell))
+                    keepCellObjects(cell);
+            return;
+        }
+        // The PVS, also where the stab tree is incomplete (the search hit its budget).
+        for (ObjectId id : visibility.cellToObject.ids())
+            kept.set(id);
+    }
+};
+
+CellPortalModule::CellPortalModule(CellPortalStage stage, const BakeOptions& bake) : _impl(std::make_unique<Impl>())
+{
+    _impl->stage = stage;
+    _impl->bake = bake;
+}
+
+CellPortalModule::~CellPortalModule() = default;
+
+const char* CellPortalModule::name() const { return stageName(_impl->stage); }
+
+void CellPortalModule::setBakedData(std::shared_ptr<const CellPortalData> data) { _impl->given = std::move(data); }
+
+std::shared_ptr<const CellPortalData> CellPortalModule::bakedData() const { return _impl->data; }
+
+bool CellPortalModule::bakedOnTheSpot() const { return _impl->bakedOnTheSpot; }
+
+void CellPortalModule::setDebugRecord(DebugRecord* record) { _impl->record = record; }
+
+void CellPortalModule::setScene(const Scene& scene)
+{
+    _scene = &scene;
+    Impl& impl = *_impl;
+    const std::uint64_t fingerprint = sceneFingerprint(scene);
+    impl.data = nullptr;
+    if (impl.given && impl.usable(*impl.given, scene, fingerprint))
+        impl.data = impl.given;
+    else if (auto registered = findBakedCellPortalData(fingerprint); registered && impl.usable(*registered, scene, fingerprint))
+        impl.data = std::move(registered);
+    impl.bakedOnTheSpot = !impl.data;
+    if (!impl.data)
+    {
+        impl.data = std::make_shared<const CellPortalData>(bakeCellPortal(scene, impl.bake));
+        // Other modules given the same scene (the stages of a progressive table, one module per
+        // view) reuse this bake instead of repeating it.
+        registerBakedCellPortalData(impl.data);
+    }
+    impl.tolerance = cellPortalTolerance(impl.data->graph);
+    impl.objects = assignObjectsToCells(scene, impl.data->graph, impl.tolerance);
+    impl.objectBounds.resize(scene.objects.size());
+    for (const SceneObject& object : scene.objects)
+        impl.objectBounds[object.id] = object.bounds;
+    impl.caches.clear();
+}
+
+void CellPortalModule::cull(const View& view, VisibleSet& visible)
+{
+    Impl& impl = *_impl;
+    if (impl.record)
+        impl.record->clear();
+    // Sightlines of a parallel projection do not start at the eye: no eye cell to start from, so the
+    // module keeps everything rather than guess.
+    if (!impl.data || impl.data->graph.cells.empty() || view.orthographic)
+        return;
+    impl.eyeCells.clear();
+    impl.data->graph.locate(view.eye, impl.tolerance, impl.eyeCells);
+    if (impl.eyeCells.empty())
+        return; // outside the subdivided space: everything may be seen
+    impl.viewPlanes.assign({view.frustum.plane(Frustum::LEFT), view.frustum.plane(Frustum::RIGHT),
+                            view.frustum.plane(Frustum::BOTTOM), view.frustum.plane(Frustum::TOP)});
+    impl.kept.reset(visible.capacity());
+    for (ObjectId id : impl.objects.everywhere)
+        impl.kept.set(id);
+    for (std::size_t slot = 0; slot < impl.eyeCells.size(); ++slot)
+        impl.cullFromCell(view.eye, impl.eyeCells[slot], slot);
+    if (impl.record && !impl.eyeCells.empty())
+        impl.record->eyeCell = impl.data->graph.cells[impl.eyeCells.front()];
+    visible.intersectWith(impl.kept);
+}
+} // namespace osgVis::core

@@ -1,0 +1,202 @@
+// The cell-portal bake and module on hand-made scenes whose visibility is known: rooms in a row
+// joined by doors, a room around a corner, an open field (one cell), and the search budget.
+#include <osgVis/core/CellPortalModule.h>
+#include <osgVis/core/ModuleRegistry.h>
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace
+{
+using namespace osgVis::core;
+
+// Axis-aligned box object with its 12 triangles, counter-clockwise seen from outside.
+ObjectId addBox(Scene& scene, const Vec3& lo, const Vec3& hi, const std::string& name)
+{
+    const auto first = static_cast<std::uint32_t>(scene.triangles.size());
+    const Aabb box(lo, hi);
+    const int faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+    for (const auto& f : faces)
+    {
+        const Vec3f a(box.corner(f[0])), b(box.corner(f[1])), c(box.corner(f[2])), d(box.corner(f[3]));
+        scene.triangles.push_back({a, b, c});
+        scene.triangles.push_back({a, c, d});
+    }
+    const ObjectId id = scene.addObject(box, 12, OBJECT_NONE, name);
+    scene.objects[id].firstTriangle = first;
+    return id;
+}
+
+// Rooms 4 m wide (x) in a row along x, walls 0.2 m thick and 3 m tall, floor and ceiling slabs; a
+// door 1 m wide, 2 m tall in each inner wall at y in [doorY, doorY+1]. A crate in each room.
+struct RoomRow
+{
+    Scene scene;
+    std::vector<ObjectId> crates;
+};
+
+RoomRow roomRow(int rooms, const std::vector<double>& doorY)
+{
+    RoomRow row;
+    Scene& s = row.scene;
+    const double length = 4.0 * rooms;
+    addBox(s, {-0.2, -0.2, -0.2}, {length + 0.2, 4.2, 0.0}, "floor");
+    addBox(s, {-0.2, -0.2, 3.0}, {length + 0.2, 4.2, 3.2}, "ceiling");
+    addBox(s, {-0.2, -0.2, 0.0}, {length + 0.2, 0.0, 3.0}, "south wall");
+    addBox(s, {-0.2, 4.0, 0.0}, {length + 0.2, 4.2, 3.0}, "north wall");
+    addBox(s, {-0.2, 0.0, 0.0}, {0.0, 4.0, 3.0}, "west wall");
+    addBox(s, {length, 0.0, 0.0}, {length + 0.2, 4.0, 3.0}, "east wall");
+    for (int i = 1; i < rooms; ++i)
+    {
+        const double x = 4.0 * i, y = doorY[std::size_t(i - 1)];
+        addBox(s, {x - 0.1, 0.0, 0.0}, {x + 0.1, y, 3.0}, "wall");
+        addBox(s, {x - 0.1, y + 1.0, 0.0}, {x + 0.1, 4.0, 3.0}, "wall");
+        addBox(s, {x - 0.1, y, 2.0}, {x + 0.1, y + 1.0, 3.0}, "lintel");
+    }
+    for (int i = 0; i < rooms; ++i)
+        row.crates.push_back(addBox(s, {4.0 * i + 1.5, 1.5, 0.0}, {4.0 * i + 2.5, 2.5, 1.0}, "crate"));
+    return row;
+}
+
+View lookingFrom(const Vec3& eye, const Vec3& direction)
+{
+    const Mat4 view = glm::lookAt(eye, eye + direction, Vec3(0, 0, 1));
+    const Mat4 projection = glm::perspective(glm::radians(60.0), 1.25, 0.1, 200.0);
+    return makeView(view, projection);
+}
+
+VisibleSet culled(VisibilityModule& module, const View& view, std::size_t objects)
+{
+    VisibleSet visible(objects, true);
+    module.cull(view, visible);
+    return visible;
+}
+
+TEST(CellPortal, StraightRowOfDoorsSeesDownTheRowButNotPastAnOffsetDoor)
+{
+    // Doors 1-2 and 2-3 line up; door 3-4 is at the far side: from room 1 no line passes doors
+    // 1-2, 2-3 and 3-4 and then reaches room 4's far end... but one may: check with cells.
+    RoomRow row = roomRow(5, {1.5, 1.5, 0.1, 2.9});
+    CellPortalModule module(CellPortalStage::CellToObject);
+    module.setScene(row.scene);
+    ASSERT_TRUE(module.bakedOnTheSpot());
+    const CellPortalData& data = *module.bakedData();
+    EXPECT_EQ(data.statistics.budgetExceededCells, 0u);
+    std::vector<std::uint32_t> cells;
+    data.graph.locate({2.0, 2.0, 1.5}, 1e-6, cells);
+    ASSERT_EQ(cells.size(), 1u);
+    const VisibleSet& pvs = data.sources[cells[0]].cellToObject;
+    EXPECT_TRUE(pvs.test(row.crates[0]));
+    EXPECT_TRUE(pvs.test(row.crates[1]));
+    EXPECT_TRUE(pvs.test(row.crates[2])); // straight through two aligned doors
+    // Room 5 needs a line through doors at y 1.5-2.5 (x=4, 8), 0.1-1.1 (x=12) and 2.9-3.9 (x=16):
+    // from x=4 to x=12 it may fall at most 2.4 m, then it must climb 1.8 m over the next 4 m. No.
+    EXPECT_FALSE(pvs.test(row.crates[4]));
+}
+
+TEST(CellPortal, EyeToObjectKeepsOnlyWhatTheViewCanReach)
+{
+    RoomRow row = roomRow(3, {1.5, 1.5});
+    CellPortalModule eyeToObject(CellPortalStage::EyeToObject);
+    eyeToObject.setScene(row.scene);
+    const std::size_t n = row.scene.objects.size();
+    // In room 1 looking east through the aligned doors: both other crates can be seen.
+    VisibleSet east = culled(eyeToObject, lookingFrom({1.0, 2.0, 1.5}, {1, 0, 0}), n);
+    EXPECT_TRUE(east.test(row.crates[1]));
+    EXPECT_TRUE(east.test(row.crates[2]));
+    // Looking west at the west wall: nothing beyond the doors.
+    VisibleSet west = culled(eyeToObject, lookingFrom({3.0, 2.0, 1.5}, {-1, 0, 0}), n);
+    EXPECT_FALSE(west.test(row.crates[1]));
+    EXPECT_FALSE(west.test(row.crates[2]));
+    EXPECT_TRUE(west.test(row.crates[0]));
+    // Standing against the south wall of room 1 looking north-east: the door at y 1.5-2.5 is in view
+    // but the line from the eye through it misses crate 3 (x 9.5-10.5, y 1.5-2.5)? It reaches y >= 4
+    // by x = 4.5; the crate of room 2 (y up to 2.5) is hidden by the door's edge.
+    VisibleSet steep = culled(eyeToObject, lookingFrom({3.6, 0.2, 1.5}, {0.3, 1, 0}), n);
+    EXPECT_FALSE(steep.test(row.crates[2]));
+}
+
+TEST(CellPortal, StagesAreNested)
+{
+    RoomRow row = roomRow(4, {1.5, 0.2, 2.8});
+    const std::size_t n = row.scene.objects.size();
+    CellPortalModule cells(CellPortalStage::CellToCell), pvs(CellPortalStage::CellToObject),
+        eyeCells(CellPortalStage::EyeToCell), eyeObjects(CellPortalStage::EyeToObject);
+    for (CellPortalModule* m : {&cells, &pvs, &eyeCells, &eyeObjects})
+        m->setScene(row.scene);
+    // The first bake was registered by fingerprint: the others reuse it.
+    EXPECT_TRUE(cells.bakedOnTheSpot());
+    EXPECT_FALSE(eyeObjects.bakedOnTheSpot());
+    for (const View& view : {lookingFrom({1, 2, 1.5}, {1, 0, 0}), lookingFrom({6, 1, 1}, {1, 0.2, 0}),
+                             lookingFrom({13, 3, 2}, {-1, -0.3, 0})})
+    {
+        const VisibleSet a = culled(cells, view, n), b = culled(pvs, view, n), c = culled(eyeCells, view, n),
+                         d = culled(eyeObjects, view, n);
+        for (ObjectId id = 0; id < n; ++id)
+        {
+            EXPECT_TRUE(!b.test(id) || a.test(id)) << id;
+            EXPECT_TRUE(!c.test(id) || a.test(id)) << id;
+            EXPECT_TRUE(!d.test(id) || (b.test(id) && c.test(id))) << id;
+        }
+        EXPECT_LT(d.count(), a.count());
+    }
+}
+
+TEST(CellPortal, EyeOutsideEveryCellOrOrthographicKeepsEverything)
+{
+    RoomRow row = roomRow(3, {1.5, 1.5});
+    CellPortalModule module;
+    module.setScene(row.scene);
+    const std::size_t n = row.scene.objects.size();
+    EXPECT_EQ(culled(module, lookingFrom({-50, 2, 1.5}, {1, 0, 0}), n).count(), n);
+    const Mat4 view = glm::lookAt(Vec3(2, 2, 1.5), Vec3(3, 2, 1.5), Vec3(0, 0, 1));
+    const View ortho = makeView(view, glm::ortho(-5.0, 5.0, -4.0, 4.0, 0.1, 100.0));
+    ASSERT_TRUE(ortho.orthographic);
+    EXPECT_EQ(culled(module, ortho, n).count(), n);
+}
+
+TEST(CellPortal, BudgetExceededFallsBackToEverythingReachable)
+{
+    RoomRow row = roomRow(6, {1.5, 1.5, 1.5, 1.5, 1.5});
+    BakeOptions tight;
+    tight.stabBudget = 2;
+    const CellPortalData data = bakeCellPortal(row.scene, tight);
+    EXPECT_GT(data.statistics.budgetExceededCells, 0u);
+    // Room 1's search stops after two nodes; every room is reachable through the doors, so every
+    // crate is in its PVS, while cells outside the building (above the ceiling) are not reachable.
+    std::vector<std::uint32_t> cells;
+    data.graph.locate({2.0, 2.0, 1.5}, 1e-6, cells);
+    ASSERT_EQ(cells.size(), 1u);
+    const SourceCellVisibility& room1 = data.sources[cells[0]];
+    ASSERT_TRUE(room1.budgetExceeded);
+    EXPECT_EQ(room1.stabTree.size(), 2u);
+    for (ObjectId crate : row.crates)
+        EXPECT_TRUE(room1.cellToObject.test(crate));
+    EXPECT_LT(room1.cellToCell.count(), data.graph.cells.size());
+}
+
+TEST(CellPortal, ResultsDoNotDependOnThreadCount)
+{
+    RoomRow row = roomRow(5, {1.5, 0.4, 2.6, 1.5});
+    BakeOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    const CellPortalData a = bakeCellPortal(row.scene, one), b = bakeCellPortal(row.scene, two);
+    ASSERT_EQ(a.sources.size(), b.sources.size());
+    for (std::size_t c = 0; c < a.sources.size(); ++c)
+    {
+        EXPECT_TRUE(a.sources[c].cellToObject == b.sources[c].cellToObject);
+        EXPECT_EQ(a.sources[c].stabTree.size(), b.sources[c].stabTree.size());
+    }
+}
+
+TEST(CellPortal, RegisteredUnderTheFourStageNames)
+{
+    for (const char* name : {"cellportal", "cellportal-cells", "cellportal-pvs", "cellportal-eyecells"})
+    {
+        ASSERT_TRUE(hasModule(name)) << name;
+        EXPECT_STREQ(createModule(name)->name(), name);
+    }
+}
+} // namespace
