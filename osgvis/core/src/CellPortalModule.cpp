@@ -4,6 +4,8 @@
 
 #include "CellObjects.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <mutex>
 
@@ -21,6 +23,20 @@ BakedStore& bakedStore()
 {
     static BakedStore store;
     return store;
+}
+
+// Largest distance from the eye to a corner of the near-plane rectangle.
+double nearPlaneReach(const View& view)
+{
+    const Mat4 clipToWorld = glm::inverse(view.projectionMatrix * view.viewMatrix);
+    double reach = 0.0;
+    for (int corner = 0; corner < 4; ++corner)
+    {
+        const Vec4 p = clipToWorld * Vec4((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0, -1.0, 1.0);
+        if (p.w != 0.0)
+            reach = std::max(reach, glm::length(Vec3(p) / p.w - view.eye));
+    }
+    return std::isfinite(reach) ? reach : 0.0;
 }
 
 const char* stageName(CellPortalStage stage)
@@ -245,7 +261,9 @@ void CellPortalModule::cull(const View& view, VisibleSet& visible)
     if (!impl.data || impl.data->graph.cells.empty() || view.orthographic)
         return;
     impl.eyeCells.clear();
-    impl.data->graph.locate(view.eye, impl.tolerance, impl.eyeCells);
+    // Geometry closer than the near plane is clipped away, so the eye sees through a wall it
+    // almost touches: every cell within the near plane's reach counts as an eye cell.
+    impl.data->graph.locate(view.eye, std::max(impl.tolerance, nearPlaneReach(view)), impl.eyeCells);
     if (impl.eyeCells.empty())
         return; // outside the subdivided space: everything may be seen
     impl.viewPlanes.assign({view.frustum.plane(Frustum::LEFT), view.frustum.plane(Frustum::RIGHT),
