@@ -85,7 +85,7 @@ std::string walkForPvs(const std::string& pvsPath)
         const std::filesystem::path modelPath(core::readPvsFile(pvsPath).modelPath);
         const std::filesystem::path model =
             modelPath.is_absolute() ? modelPath : std::filesystem::path(pvsPath).parent_path() / modelPath;
-        return walkBeside(model.string());
+        return walkBeside(model.lexically_normal().string());
     }
     catch (const core::PvsFormatError&)
     {
