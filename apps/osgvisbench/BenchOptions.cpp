@@ -67,7 +67,7 @@ void parseSize(const std::string& text, unsigned& width, unsigned& height)
 
 std::string benchUsage()
 {
-    return "usage: osgvisbench (--scene FILE | --generate office|city|tetra [--triangles N] [--seed S])\n"
+    return "usage: osgvisbench (--scene FILE | --generate office|city|floor|tetra [--triangles N] [--seed S])\n"
            "                   [--walk FILE] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
            "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
            "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--cull-only] [--json OUT.json] [--help]\n"

@@ -41,6 +41,7 @@ void parseSize(const std::string& text, unsigned& width, unsigned& height)
 ViewerOptions parseOptions(int argc, char** argv)
 {
     ViewerOptions options;
+    bool modeGiven = false;
     std::vector<std::string> args(argv + 1, argv + argc);
     for (std::size_t i = 0; i < args.size(); ++i)
     {
@@ -53,7 +54,10 @@ ViewerOptions parseOptions(int argc, char** argv)
         if (arg == "--help" || arg == "-h")
             options.help = true;
         else if (arg == "--mode")
+        {
             options.mode = value();
+            modeGiven = true;
+        }
         else if (arg == "--walk")
             options.walkPath = value();
         else if (arg == "--record")
@@ -80,7 +84,12 @@ ViewerOptions parseOptions(int argc, char** argv)
     if (!options.generateKind.empty() && !options.scenePath.empty())
         throw OptionsError("give either a SCENE file or --generate, not both");
     if (options.generateKind.empty() && options.scenePath.empty())
-        throw OptionsError("no scene given: pass a model file or --generate office|city|tetra (see --help)");
+        throw OptionsError("no scene given: pass a model file or --generate office|city|floor|tetra (see --help)");
+    // A baked .pvs is there to be walked with its cells and portals.
+    const std::string pvs = ".pvs";
+    if (!modeGiven && options.scenePath.size() > pvs.size() &&
+        options.scenePath.compare(options.scenePath.size() - pvs.size(), pvs.size(), pvs) == 0)
+        options.mode = "cellportal";
     return options;
 }
 
@@ -89,13 +98,14 @@ std::string usageText(const std::string& programName)
     std::ostringstream out;
     out << "usage: " << programName
         << " [SCENE] [--mode M] [--walk FILE] [--record FILE] [--headless OUTDIR] [--size WxH]\n"
-           "       [--generate office|city|tetra] [--triangles N] [--seed S] [--help]\n"
+           "       [--generate office|city|floor|tetra] [--triangles N] [--seed S] [--help]\n"
            "\n"
-           "Walks through SCENE (any model OpenSceneGraph reads) or a generated scene, culled by mode M.\n"
+           "Walks through SCENE (any model OpenSceneGraph reads, or a .pvs baked by osgvispvs: the model it\n"
+           "names, culled with its cells and portals) or a generated scene, culled by mode M.\n"
            "\n"
            "  SCENE              model file; its walk is SCENE's stem + .walk when that file exists\n"
            "  --mode M           osg (OSG's own culling) or a module chain, e.g. frustum or frustum+octree\n"
-           "                     (default frustum); an unknown mode lists the known ones\n"
+           "                     (default frustum; cellportal for a .pvs); an unknown mode lists the known ones\n"
            "  --walk FILE        walk path (docs/walk-format.md); default: the walk beside SCENE, the\n"
            "                     generator's walk with --generate, else an orbit around the scene\n"
            "  --record FILE      where key r saves the recorded eye path\n"
