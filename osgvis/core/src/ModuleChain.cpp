@@ -41,10 +41,8 @@ void ModuleChain::setScene(const Scene& scene)
         m->setScene(scene);
 }
 
-void ModuleChain::sceneChanged(const SceneChange& change)
+void ModuleChain::rememberRemoved(const SceneChange& change)
 {
-    if (!_scene)
-        return;
     _removed.resize(_scene->objects.size(), false);
     for (ObjectId id : change.objects)
     {
@@ -55,8 +53,30 @@ void ModuleChain::sceneChanged(const SceneChange& change)
         else if (change.kind == SceneChange::Kind::Inserted)
             _removed[id] = false;
     }
+}
+
+void ModuleChain::sceneChanged(const SceneChange& change)
+{
+    if (!_scene)
+        return;
+    rememberRemoved(change);
     for (auto& m : _modules)
         m->sceneChanged(change);
+}
+
+void ModuleChain::sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes)
+{
+    if (!_scene)
+    {
+        setScene(scene);
+        return;
+    }
+    _scene = &scene;
+    for (const SceneChange& change : changes)
+        rememberRemoved(change);
+    _removed.resize(scene.objects.size(), false);
+    for (auto& m : _modules)
+        m->sceneReplaced(scene, changes);
 }
 
 void ModuleChain::cull(const View& view, VisibleSet& visible)

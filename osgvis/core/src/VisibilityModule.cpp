@@ -7,4 +7,9 @@ void VisibilityModule::sceneChanged(const SceneChange&)
     if (_scene)
         setScene(*_scene);
 }
+
+void VisibilityModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange>&)
+{
+    setScene(scene);
+}
 } // namespace osgVis::core

@@ -31,6 +31,9 @@ public:
     // Forwards to every stage; also remembers Removed objects (never reported again until an
     // Inserted change names them).
     void sceneChanged(const SceneChange& change);
+    // The scene was re-extracted into `scene` with stable ids (VisibilityModule::sceneReplaced);
+    // Removed objects are remembered as with sceneChanged.
+    void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes);
     // Starts from every object of the scene (less those reported Removed) and lets each stage refine;
     // finally re-adds objects flagged OBJECT_ALWAYS_VISIBLE. Never culls a visible object unless one
     // of the stages is approximate.
@@ -38,6 +41,7 @@ public:
     const std::vector<StageTiming>& lastTimings() const { return _timings; }
 
 private:
+    void rememberRemoved(const SceneChange& change);
     std::vector<std::unique_ptr<VisibilityModule>> _modules;
     std::vector<StageTiming> _timings;
     const Scene* _scene = nullptr;

@@ -34,6 +34,10 @@ public:
     virtual void setScene(const Scene& scene) = 0;
     // The scene (same object as given to setScene) changed; the default rebuilds.
     virtual void sceneChanged(const SceneChange& change);
+    // The renderer re-extracted the scene into a new object (`scene`) in which every object kept its
+    // id; `changes` say which ids were inserted, moved or removed relative to the scene the module
+    // had. The module must use `scene` from now on; the default calls setScene(scene).
+    virtual void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes);
 
     // Query phase. `visible` arrives holding the candidates (all objects, or what earlier modules
     // of a chain kept) and leaves holding a subset of them.

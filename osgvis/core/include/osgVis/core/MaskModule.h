@@ -1,0 +1,99 @@
+#pragma once
+// Online occlusion culling with occlusion masks after Wang, Agarwal & Har-Peled, "An On-line
+// Occlusion-Culling Algorithm for Fast Walkthrough in Urban Areas": no preprocessing, no stated
+// occluders. On a *critical frame* the module picks R occluders near the eye from a kd-tree by
+// coverage importance, rasterizes them in software into a conservative max-depth mask, builds the
+// mask's pyramid and marks every kd-tree node or object behind it with the time stamp
+// t_c + δ/V: hidden for every eye within δ of the critical eye, δ following from the image-space
+// shrinkage Δ and the occluders' minimum distance (docs/mask.md derives the bound at the frame
+// corners). Other frames only read the stamps. Objects may be inserted, moved and deleted
+// during the walk (sceneChanged / sceneReplaced).
+//
+// Modes: "mask" shrinks each occluder group's projection on its own (conservative for every eye in
+// the δ-ball); "mask-approx" shrinks the fused union as the paper does (faster, bounded leaks:
+// approximate); "mask-distance" is "mask" with the plain distance measure for occluder selection.
+#include <osgVis/core/MaskKdTree.h>
+#include <osgVis/core/OcclusionMask.h>
+#include <osgVis/core/VisibilityModule.h>
+
+#include <memory>
+#include <string>
+
+namespace osgVis::core
+{
+enum class OccluderMeasure
+{
+    CoverageImportance, // φ(ξ) = min over sampled eyes of the δ-ball of coverage × mindist
+    Distance,           // nearest first
+};
+
+enum class MaskShrink
+{
+    PerOccluder, // "mask": conservative
+    FusedUnion,  // "mask-approx": the paper's variant, not conservative
+};
+
+struct MaskOptions
+{
+    MaskShrink shrink = MaskShrink::PerOccluder;
+    OccluderMeasure measure = OccluderMeasure::CoverageImportance;
+    double shrinkPixels = 4.0;        // Δ, in frame pixels (the viewport's)
+    std::uint32_t maskDownscale = 4;  // mask = viewport / this (rounded up), at least 16×16
+    std::uint32_t occluders = 64;     // R: occluder objects per critical frame
+    double minOccluderDistance = 0.0; // D: occluders nearer than this to the eye are not used (world
+                                      // units; the near plane's reach is always added)
+    double maxEyeSpeed = 15.0;        // V, world units per second of walk time
+    double criticalTurnDegrees = 10.0; // view direction change that forces a critical frame
+    std::uint32_t stopObjects = 8;    // ρ: marking stops at nodes with fewer objects and tests them one by one
+    enum class Tree { Auto, Planar, Full } tree = Tree::Auto; // Auto: Planar for flat (2.5-D) scenes
+    std::uint32_t maxLeafObjects = 4;
+};
+
+class MaskModule : public VisibilityModule
+{
+public:
+    explicit MaskModule(const MaskOptions& options = {});
+    ~MaskModule() override;
+    const char* name() const override;
+    bool approximate() const override { return _options.shrink == MaskShrink::FusedUnion; }
+    void setScene(const Scene& scene) override;
+    void sceneChanged(const SceneChange& change) override;
+    void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes) override;
+    void cull(const View& view, VisibleSet& visible) override;
+    void setDebugRecord(DebugRecord* record) override;
+
+    const MaskOptions& options() const { return _options; }
+
+    enum class CriticalReason
+    {
+        None,          // stamps of an earlier critical frame answered
+        First,         // no mask yet
+        StampExpired,  // walk time passed t_c + δ/V
+        LeftRegion,    // the eye moved farther than δ from the critical eye (faster than V)
+        Turned,        // view direction changed more than criticalTurnDegrees
+        OccluderGone,  // an occluder of the current mask was deleted or moved
+        ViewChanged,   // projection or viewport changed
+    };
+    // Figures of the last query (for the benchmark's per-step table and the tests).
+    struct Statistics
+    {
+        CriticalReason critical = CriticalReason::None;
+        double selectMs = 0.0, rasterizeMs = 0.0, pyramidMs = 0.0, markMs = 0.0; // critical frames
+        std::uint32_t occluderObjects = 0, occluderPolygons = 0, groups = 0;
+        std::size_t coveredPixels = 0;
+        std::uint32_t maskWidth = 0, maskHeight = 0;
+        std::uint32_t nodesTested = 0, nodesMarked = 0, objectsMarked = 0;
+        double delta = 0.0;       // δ of the current mask (world units)
+        double validUntil = 0.0;  // t_c + δ/V
+        std::uint32_t culled = 0; // objects this query removed
+    };
+    Statistics lastStatistics() const;
+    // The mask of the last critical frame (for the debug view and the tests).
+    const OcclusionMask& mask() const;
+
+private:
+    struct Impl;
+    MaskOptions _options;
+    std::unique_ptr<Impl> _impl;
+};
+} // namespace osgVis::core
