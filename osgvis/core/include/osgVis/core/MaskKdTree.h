@@ -13,10 +13,15 @@
 //
 // Lazy updates: insert() drops an object into the leaf whose box is nearest its centre and
 // grows the boxes on the way up; remove() takes it out of its leaf without shrinking any box;
-// move() is remove + insert. Each of them clears the stamps of the object and of every ancestor
-// of the leaves it leaves and enters (pushing an ancestor's stamp down to the siblings first, so
-// what was known about them is kept). Boxes therefore only grow until the next rebuild(),
-// which the owner calls when updatesSinceBuild() gets large.
+// move() is remove + insert. Each of them clears the object's own stamp; insert (and so move)
+// also clears the stamps of every ancestor of the leaf it enters, pushing each stamp down to the
+// children first (and a leaf's to its other objects), so what was known about everything else is
+// kept exactly. remove needs no ancestor clearing: nothing new appears in the subtree it leaves.
+// Boxes therefore only grow until the next rebuild(), which the owner calls when
+// updatesSinceBuild() gets large.
+//
+// An object that is not in the tree (left out, removed, unknown id) is never hidden(): the owner
+// must draw what the tree cannot vouch for.
 #include <osgVis/core/Aabb.h>
 #include <osgVis/core/Scene.h>
 
@@ -42,10 +47,13 @@ public:
         std::uint32_t objectCount = 0;     // objects in the subtree
         std::vector<ObjectId> objects;     // leaves only
         double stamp = 0.0;                // hidden until this walk time (0: unknown)
+        std::uint8_t axis = 0;             // inner nodes: the split axis (0 x, 1 y, 2 z)
+        double splitPosition = 0.0;        // inner nodes: the median centre the split was made at
         bool leaf() const { return left == None; }
     };
 
-    // Objects with empty or non-finite bounds are left out (the owner must keep them visible).
+    // Objects with empty or non-finite bounds are left out (the owner must keep them visible), and
+    // so are those with present[id] == false; ids beyond present.size() count as present.
     void build(const std::vector<Aabb>& objectBounds, const std::vector<bool>& present, Split split,
                std::uint32_t maxLeafObjects = 4);
     // Rebuild from the current contents (after many lazy updates).
@@ -56,10 +64,15 @@ public:
     const Node& node(std::uint32_t i) const { return _nodes[i]; }
     std::uint32_t root() const { return 0; }
     Split split() const { return _split; }
+    // The axes a node may be split along: the first splitAxisCount() entries of splitAxes()
+    // (Planar: the two of largest scene extent, Full: x, y, z).
+    const int* splitAxes() const { return _axes; }
+    int splitAxisCount() const { return _axisCount; }
     // The leaf holding `id`, or None (left out / removed / unknown id).
     std::uint32_t leafOf(ObjectId id) const;
     bool contains(ObjectId id) const { return leafOf(id) != None; }
 
+    // insert of an id already in the tree moves it; empty or non-finite bounds leave it out.
     void insert(ObjectId id, const Aabb& bounds);
     void remove(ObjectId id);
     void move(ObjectId id, const Aabb& bounds);
@@ -77,8 +90,13 @@ public:
 
 private:
     std::uint32_t buildNode(std::vector<ObjectId>& ids, std::size_t first, std::size_t count, std::uint32_t parent);
+    bool splitNode(std::uint32_t node, std::vector<ObjectId>& ids, std::size_t first, std::size_t count);
+    void chooseSplitAxes(const Aabb& sceneBounds);
     void clearStampsUpFrom(std::uint32_t node);
     void growUpFrom(std::uint32_t node, const Aabb& bounds);
+    void ensureObject(ObjectId id);
+    void detach(ObjectId id);
+    void attach(ObjectId id, const Aabb& bounds);
 
     Split _split = Split::Full;
     int _axes[3] = {0, 1, 2};
