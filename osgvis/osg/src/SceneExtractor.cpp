@@ -52,6 +52,8 @@ const std::vector<core::ObjectId>& ExtractedScene::idsOf(const osg::Drawable* d)
 
 void ExtractedScene::indexObject(core::ObjectId id)
 {
+    if (removed(id))
+        return;
     _idsByDrawable[refs[id].drawable.get()].push_back(id);
 }
 

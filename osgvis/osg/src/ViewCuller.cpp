@@ -63,7 +63,7 @@ void ViewCuller::setExtractionOptions(const ExtractionOptions& options)
 void ViewCuller::dirtyScene()
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    _scene = nullptr;
+    _dirty = true;
 }
 
 std::shared_ptr<ViewCuller::PerView> ViewCuller::viewFor(const osg::Referenced* key)
@@ -92,10 +92,11 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     {
         std::lock_guard<std::mutex> lock(_mutex);
         if (!_scene || _root.get() != &root)
-        {
             _scene = extractScene(root, _extractionOptions);
-            _root = &root;
-        }
+        else if (_dirty)
+            _scene = reextractScene(root, *_scene, _extractionOptions);
+        _root = &root;
+        _dirty = false;
         scene = _scene;
         view = viewFor(key);
     }
@@ -116,7 +117,12 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     const auto start = std::chrono::steady_clock::now();
     if (view->scene != scene)
     {
-        view->chain.setScene(scene->scene);
+        // note: view->scene holds the extraction it names, so a match with `replaces` (which is only
+        // ever the extraction right before `scene`) cannot be an address reused by another one.
+        if (view->scene && scene->replaces == view->scene.get())
+            view->chain.sceneReplaced(scene->scene, scene->changes);
+        else
+            view->chain.setScene(scene->scene);
         view->scene = scene;
     }
     const osg::Viewport* viewport = cv.getViewport();
@@ -131,13 +137,17 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         debugLock.unlock();
 
     CullStatistics figures;
-    figures.objects = static_cast<unsigned>(scene->scene.objects.size());
     for (const core::SceneObject& object : scene->scene.objects)
+    {
+        if (scene->removed(object.id))
+            continue;
+        ++figures.objects;
         if (view->visible.test(object.id))
         {
             ++figures.visible;
             figures.trianglesVisible += object.triangleCount;
         }
+    }
     figures.cullMs = std::chrono::duration<double, std::milli>(end - start).count();
     if (frameStamp)
         recordStatistics(camera, frameStamp->getFrameNumber(), figures);
@@ -157,7 +167,7 @@ CullStatistics ViewCuller::getLastStatistics() const
 osg::ref_ptr<const ExtractedScene> ViewCuller::getScene() const
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    return _scene;
+    return _dirty ? nullptr : _scene;
 }
 
 void ViewCuller::setDebugRecord(core::DebugRecord* record)

@@ -4,6 +4,8 @@
 
 #include <osgUtil/CullVisitor>
 
+#include <algorithm>
+
 namespace osgVis
 {
 VisibilityGroup::VisibilityGroup() : _culler(new ViewCuller) {}
@@ -53,10 +55,29 @@ void VisibilityGroup::installCullCallbacks(const ExtractedScene& scene)
     std::lock_guard<std::mutex> lock(_installMutex);
     if (_callbacksInstalledFor.get() == &scene)
         return;
+    // note: drawables of an earlier extraction keep their callback; it finds them in no active
+    // context's scene any more and hides nothing.
     for (const ObjectRef& ref : scene.refs)
-        VisibilityCullCallback::installOn(*ref.drawable);
+        if (ref.drawable)
+            VisibilityCullCallback::installOn(*ref.drawable);
     _callbacksInstalledFor = &scene;
 }
+
+namespace
+{
+// False only for a child with objects, none of them visible.
+bool anyVisible(const ChildRange& range, const core::VisibleSet& visible)
+{
+    if (!range.ids.empty())
+        return std::any_of(range.ids.begin(), range.ids.end(), [&](core::ObjectId id) { return visible.test(id); });
+    if (range.first >= range.end)
+        return true;
+    for (core::ObjectId id = range.first; id < range.end; ++id)
+        if (visible.test(id))
+            return true;
+    return false;
+}
+} // namespace
 
 void VisibilityGroup::traverse(osg::NodeVisitor& nv)
 {
@@ -78,14 +99,8 @@ void VisibilityGroup::traverse(osg::NodeVisitor& nv)
     const bool rangesMatch = ranges.size() == _children.size();
     for (unsigned i = 0; i < _children.size(); ++i)
     {
-        if (rangesMatch && ranges[i].closed && ranges[i].first < ranges[i].end)
-        {
-            bool anyVisible = false;
-            for (core::ObjectId id = ranges[i].first; id < ranges[i].end && !anyVisible; ++id)
-                anyVisible = result.visible->test(id);
-            if (!anyVisible)
-                continue; // a closed child draws nothing but its objects
-        }
+        if (rangesMatch && ranges[i].closed && !anyVisible(ranges[i], *result.visible))
+            continue; // a closed child draws nothing but its objects
         _children[i]->accept(nv);
     }
 }
