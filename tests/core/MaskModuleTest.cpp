@@ -235,6 +235,51 @@ std::unique_ptr<VisibilityModule> makeMode(const std::string& mode)
     return module;
 }
 
+// ---- the reference itself ------------------------------------------------------------------
+
+// The rays must get the basic cases right, or every test below proves nothing.
+TEST(RayCastVisibility, SeesOnlyWhatIsInFront)
+{
+    Scene scene;
+    const ObjectId wall = addBox(scene, {-5, 10, -5}, {5, 11, 5}, "wall");
+    const ObjectId behind = addBox(scene, {-1, 20, -1}, {1, 21, 1}, "behind");
+    const ObjectId aside = addBox(scene, {12, 20, -1}, {13, 21, 1}, "aside");
+    const ObjectId outside = addBox(scene, {-1, -20, -1}, {1, -19, 1}, "behind the eye");
+    const View view = lookAlongY({0, 0, 0}, 0.0, 160, 120);
+    const RayCastResult seen = RayCastVisibility(scene).cast(view);
+    EXPECT_EQ(seen.ids(), (std::vector<ObjectId>{wall, aside}));
+    EXPECT_NEAR(seen.seenAtDepth[wall], 10.0, 1e-9);
+
+    double depth = 0.0;
+    EXPECT_EQ(RayCastVisibility(scene).objectAt(view, 80.0, 60.0, &depth), wall);
+    EXPECT_NEAR(depth, 10.0, 1e-9);
+    // Removed objects neither show nor hide.
+    EXPECT_EQ(RayCastVisibility(scene, {true}).cast(view).ids(), (std::vector<ObjectId>{behind, aside}));
+    // The near plane clips the wall away.
+    const View clipped = lookFrom({0, 0, 0}, {0, 1, 0}, 0.0, 160, 120, perspective(4.0 / 3.0, 15.0));
+    EXPECT_EQ(RayCastVisibility(scene).cast(clipped).ids(), (std::vector<ObjectId>{behind, aside}));
+    // Orthographic rays are parallel: the box beside the wall shows, the one behind does not.
+    const View ortho = lookFrom({0, 0, 0}, {0, 1, 0}, 0.0, 160, 120, glm::ortho(-20.0, 20.0, -15.0, 15.0, 0.1, 100.0));
+    EXPECT_EQ(RayCastVisibility(scene).cast(ortho).ids(), (std::vector<ObjectId>{wall, aside}));
+    (void)outside;
+}
+
+TEST(RayCastVisibility, CulledFacesNeitherShowNorHide)
+{
+    Scene scene;
+    // The eye inside a shell, a box outside it.
+    const ObjectId shell = addBox(scene, {-10, -10, -10}, {10, 10, 10}, "shell", OBJECT_CULL_BACK);
+    const ObjectId box = addBox(scene, {-1, 20, -1}, {1, 21, 1}, "box");
+    const View view = lookAlongY({0, 0, 0}, 0.0, 160, 120);
+    EXPECT_EQ(RayCastVisibility(scene).cast(view).ids(), (std::vector<ObjectId>{box}));
+    scene.objects[shell].flags = OBJECT_CULL_FRONT; // from inside, its faces are back faces: drawn
+    EXPECT_EQ(RayCastVisibility(scene).cast(view).ids(), (std::vector<ObjectId>{shell}));
+    scene.objects[shell].flags = OBJECT_NONE;
+    EXPECT_EQ(RayCastVisibility(scene).cast(view).ids(), (std::vector<ObjectId>{shell}));
+    scene.objects[shell].flags = OBJECT_TRANSPARENT;
+    EXPECT_EQ(RayCastVisibility(scene).cast(view).ids(), (std::vector<ObjectId>{shell, box}));
+}
+
 // ---- city walk ------------------------------------------------------------------------------
 
 // The walk down the street x = 85 (between block columns 2 and 3), looking along +y with a gentle
