@@ -71,6 +71,7 @@ std::string benchUsage()
            "                   [--walk FILE] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
            "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
            "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--cull-only] [--json OUT.json] [--help]\n"
+           "                   [--dynamic]\n"
            "\n"
            "Renders every mode over the same walk in one process and measures it against the\n"
            "exact-visibility oracle (docs/benchmark.md). A module chain is written with '+'.\n"
@@ -81,6 +82,10 @@ std::string benchUsage()
            "  the observer S times faster (every S-th walk key) under T TBB threads, and check that\n"
            "  every thread count gives the same visible sets. A missing list means speed 1 or\n"
            "  TBB's default thread count. --cull-only runs just this sweep (no oracle, no GL).\n"
+           "--dynamic: a dynamic walk (osg and module-chain modes): 12 cars drive along the walk's\n"
+           "  streets every frame, 3 buildings are dropped on existing ones at 1/4 and at 1/2 of\n"
+           "  the views, 3 are deleted at 1/3 and at 2/3 (seeded by --seed); the oracle renders\n"
+           "  every frame's scene, and the number of changes applied is printed.\n"
            "Exit status: 0 ok, 1 a conservative mode culled a visible object, gave different\n"
            "visible sets at different thread counts, or the run failed; 2 bad command line.\n";
 }
@@ -139,6 +144,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.threads = parsePositiveList(flag, value(), 256);
         else if (flag == "--cull-only")
             options.cullOnly = true;
+        else if (flag == "--dynamic")
+            options.dynamic = true;
         else
             throw UsageError("unknown argument '" + flag + "'");
     }
@@ -153,6 +160,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             throw UsageError("--modes contains an empty name");
     if (options.supersample < 1 || options.supersample > 8)
         throw UsageError("--supersample must lie between 1 and 8");
+    if (options.dynamic && (options.cullOnly || options.sweeps()))
+        throw UsageError("--dynamic renders a walk against the oracle: no --cull-only, --speeds, --threads or --mask-deltas");
     if (options.cullOnly && !options.sweeps())
         throw UsageError("--cull-only needs a sweep: give --speeds and/or --threads");
     return options;

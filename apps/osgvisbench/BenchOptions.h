@@ -30,6 +30,7 @@ struct BenchOptions
     std::vector<unsigned> speeds;     // --speeds 1,2,4: cull-only sweep over observer speeds
     std::vector<unsigned> threads;    // --threads 1,2: cull-only sweep over TBB thread counts
     bool cullOnly = false;            // --cull-only: the sweep alone, no oracle and no rendering
+    bool dynamic = false;             // --dynamic: cars, dropped and deleted buildings during the walk (DynamicWalk)
     bool help = false;                // --help
     std::string commandLine;          // argv joined, recorded in the JSON
 

@@ -5,6 +5,7 @@
 #include "BenchMode.h"
 #include "BenchOptions.h"
 #include "BenchRun.h"
+#include "DynamicBench.h"
 #include "ReportJson.h"
 #include "ReportTable.h"
 
@@ -72,7 +73,7 @@ int main(int argc, char** argv)
 
     try
     {
-        const BenchReport report = runBench(options, modes);
+        const BenchReport report = options.dynamic ? runDynamicBench(options, modes) : runBench(options, modes);
         writeReportTable(std::cout, report);
         if (!options.jsonFile.empty())
             saveReportJson(options.jsonFile, report);
