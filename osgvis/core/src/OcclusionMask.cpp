@@ -1,0 +1,213 @@
+// Occlusion mask and its max-depth pyramid, after Zhang et al.'s hierarchical occlusion maps as
+// used by Wang, Agarwal & Har-Peled's on-line mask method (max depth per texel instead of opacity).
+#include <osgVis/core/OcclusionMask.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace osgVis::core
+{
+namespace
+{
+constexpr float Uncovered = std::numeric_limits<float>::infinity();
+
+// out[i] = max(in[i-r .. i+r]) over `count` items of `itemSize` contiguous floats each (item i at
+// i·itemSize), +inf where the window reaches past either end (beyond the mask is uncovered). Van
+// Herk / Gil–Werman: per block of 2r+1 items a running max from the block's start (g) and from
+// its end (h); any window spans at most two blocks, so out[i] = max(h[i-r], g[i+r]) — three max
+// operations per element whatever r is.
+void windowMax(const float* in, float* out, std::size_t count, std::size_t itemSize, std::size_t radius, float* g,
+               float* h)
+{
+    const std::size_t window = 2 * radius + 1;
+    if (count < window)
+    {
+        std::fill(out, out + count * itemSize, Uncovered);
+        return;
+    }
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        const float* item = in + i * itemSize;
+        float* running = g + i * itemSize;
+        if (i % window == 0)
+            std::copy(item, item + itemSize, running);
+        else
+            for (std::size_t j = 0; j < itemSize; ++j)
+                running[j] = std::max(running[j - itemSize], item[j]);
+    }
+    for (std::size_t i = count; i-- > 0;)
+    {
+        const float* item = in + i * itemSize;
+        float* running = h + i * itemSize;
+        if (i + 1 == count || (i + 1) % window == 0)
+            std::copy(item, item + itemSize, running);
+        else
+            for (std::size_t j = 0; j < itemSize; ++j)
+                running[j] = std::max(running[j + itemSize], item[j]);
+    }
+    std::fill(out, out + radius * itemSize, Uncovered);
+    for (std::size_t i = radius; i + radius < count; ++i)
+    {
+        const float* fromLeft = h + (i - radius) * itemSize;
+        const float* toRight = g + (i + radius) * itemSize;
+        for (std::size_t j = 0; j < itemSize; ++j)
+            out[i * itemSize + j] = std::max(fromLeft[j], toRight[j]);
+    }
+    std::fill(out + (count - radius) * itemSize, out + count * itemSize, Uncovered);
+}
+} // namespace
+
+void OcclusionMask::reset(std::uint32_t width, std::uint32_t height)
+{
+    _width = width;
+    _height = height;
+    _base.assign(std::size_t(width) * height, Uncovered);
+    dropPyramid();
+}
+
+void OcclusionMask::dropPyramid()
+{
+    for (std::vector<float>& level : _levels)
+        _spareLevels.push_back(std::move(level));
+    _levels.clear();
+    _levelWidth.clear();
+    _levelHeight.clear();
+}
+
+void OcclusionMask::cover(std::uint32_t x, std::uint32_t y, float depth)
+{
+    if (!_levels.empty())
+        dropPyramid();
+    float& stored = _base[std::size_t(y) * _width + x];
+    if (depth < stored) // note: false for NaN, which therefore covers nothing
+        stored = depth;
+}
+
+std::size_t OcclusionMask::coveredPixels() const
+{
+    return std::size_t(std::count_if(_base.begin(), _base.end(), [](float depth) { return depth < Uncovered; }));
+}
+
+void OcclusionMask::shrinkUnion(std::uint32_t pixels)
+{
+    dropPyramid();
+    if (pixels == 0 || _base.empty())
+        return;
+    // The eroded depth is the max over the (2Δ+1)² neighbourhood: any uncovered (+inf) pixel in it,
+    // or the border, makes the result +inf. Max is separable: rows, then columns (rows as items).
+    const std::size_t size = _base.size();
+    _erosionScratch.resize(3 * size);
+    float* rowsDone = _erosionScratch.data();
+    float* g = rowsDone + size;
+    float* h = g + size;
+    for (std::uint32_t y = 0; y < _height; ++y)
+    {
+        const std::size_t row = std::size_t(y) * _width;
+        windowMax(_base.data() + row, rowsDone + row, _width, 1, pixels, g + row, h + row);
+    }
+    windowMax(rowsDone, _base.data(), _height, _width, pixels, g, h);
+}
+
+void OcclusionMask::buildPyramid()
+{
+    dropPyramid();
+    auto newLevel = [this](std::uint32_t width, std::uint32_t height) -> std::vector<float>&
+    {
+        if (_spareLevels.empty())
+            _levels.emplace_back();
+        else
+        {
+            _levels.push_back(std::move(_spareLevels.back()));
+            _spareLevels.pop_back();
+        }
+        _levelWidth.push_back(width);
+        _levelHeight.push_back(height);
+        _levels.back().resize(std::size_t(width) * height);
+        return _levels.back();
+    };
+    std::vector<float>& base = newLevel(_width, _height);
+    std::copy(_base.begin(), _base.end(), base.begin());
+    if (_width == 0 || _height == 0)
+        return;
+    while (_levelWidth.back() > 1 || _levelHeight.back() > 1)
+    {
+        const std::uint32_t fineWidth = _levelWidth.back(), fineHeight = _levelHeight.back();
+        const std::uint32_t width = (fineWidth + 1) / 2, height = (fineHeight + 1) / 2;
+        std::vector<float>& coarse = newLevel(width, height);
+        const std::vector<float>& fine = _levels[_levels.size() - 2]; // valid: newLevel is done growing _levels
+        for (std::uint32_t y = 0; y < height; ++y)
+        {
+            const float* row0 = fine.data() + std::size_t(2 * y) * fineWidth;
+            // A missing child (odd size) is uncovered, so the texel is too.
+            const bool hasRow1 = 2 * y + 1 < fineHeight;
+            const float* row1 = hasRow1 ? row0 + fineWidth : nullptr;
+            float* out = coarse.data() + std::size_t(y) * width;
+            for (std::uint32_t x = 0; x < width; ++x)
+            {
+                const std::uint32_t x0 = 2 * x, x1 = 2 * x + 1;
+                const bool hasColumn1 = x1 < fineWidth;
+                float value = hasColumn1 ? std::max(row0[x0], row0[x1]) : Uncovered;
+                value = hasRow1 ? std::max(value, hasColumn1 ? std::max(row1[x0], row1[x1]) : Uncovered) : Uncovered;
+                out[x] = value;
+            }
+        }
+    }
+}
+
+bool OcclusionMask::texelHidden(std::size_t level, std::uint32_t tx, std::uint32_t ty, const std::uint32_t pixels[4],
+                                float nearestDepth) const
+{
+    // A texel nearer than nearestDepth hides all its pixels (its max is over all of them, an
+    // uncovered one being +inf). Otherwise one of its pixels (or a missing child beyond the mask)
+    // is not nearer: decisive when the rectangle spans the texel's whole (unclipped) footprint,
+    // else the children the rectangle overlaps decide.
+    if (_levels[level][std::size_t(ty) * _levelWidth[level] + tx] < nearestDepth)
+        return true;
+    if (level == 0)
+        return false;
+    const std::uint64_t first[2] = {std::uint64_t(tx) << level, std::uint64_t(ty) << level};
+    const std::uint64_t last[2] = {((std::uint64_t(tx) + 1) << level) - 1, ((std::uint64_t(ty) + 1) << level) - 1};
+    if (pixels[0] <= first[0] && last[0] <= pixels[2] && pixels[1] <= first[1] && last[1] <= pixels[3])
+        return false;
+    const std::size_t child = level - 1;
+    const std::uint32_t cx0 = std::max(2 * tx, pixels[0] >> child), cx1 = std::min(2 * tx + 1, pixels[2] >> child);
+    const std::uint32_t cy0 = std::max(2 * ty, pixels[1] >> child), cy1 = std::min(2 * ty + 1, pixels[3] >> child);
+    for (std::uint32_t cy = cy0; cy <= cy1; ++cy)
+        for (std::uint32_t cx = cx0; cx <= cx1; ++cx)
+            if (!texelHidden(child, cx, cy, pixels, nearestDepth))
+                return false;
+    return true;
+}
+
+bool OcclusionMask::rectHidden(double x0, double y0, double x1, double y1, float nearestDepth) const
+{
+    // note: every comparison is written so that NaN makes it fail.
+    if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= double(_width) && y1 <= double(_height) && x0 <= x1 && y0 <= y1))
+        return false;
+    if (_width == 0 || _height == 0 || std::isnan(nearestDepth))
+        return false;
+    const std::uint32_t pixels[4] = {std::uint32_t(std::floor(x0)), std::uint32_t(std::floor(y0)),
+                                     std::min(std::uint32_t(std::floor(x1)), _width - 1),
+                                     std::min(std::uint32_t(std::floor(y1)), _height - 1)};
+    if (_levels.empty())
+    {
+        for (std::uint32_t y = pixels[1]; y <= pixels[3]; ++y)
+            for (std::uint32_t x = pixels[0]; x <= pixels[2]; ++x)
+                if (!(_base[std::size_t(y) * _width + x] < nearestDepth))
+                    return false;
+        return true;
+    }
+    // Finest level where the rectangle spans at most 2×2 texels: few reads, yet texels small
+    // enough to be decisive.
+    std::size_t level = 0;
+    while (level + 1 < _levels.size() &&
+           ((pixels[2] >> level) - (pixels[0] >> level) > 1 || (pixels[3] >> level) - (pixels[1] >> level) > 1))
+        ++level;
+    for (std::uint32_t ty = pixels[1] >> level; ty <= pixels[3] >> level; ++ty)
+        for (std::uint32_t tx = pixels[0] >> level; tx <= pixels[2] >> level; ++tx)
+            if (!texelHidden(level, tx, ty, pixels, nearestDepth))
+                return false;
+    return true;
+}
+} // namespace osgVis::core
