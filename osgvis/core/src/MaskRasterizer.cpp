@@ -1,0 +1,461 @@
+// Conservative rasterization of occluder groups into the occlusion mask (the "fully covered pixels
+// only" mask of Wang, Agarwal & Har-Peled). Per polygon, signed edge distances decide for every
+// pixel square (grown by the shrink) whether it touches the polygon (separating-axis test on the
+// polygon's edge normals plus its bounding box, exact for a convex polygon and a square) and
+// whether it lies inside each outline edge; a pixel is covered when it touches some polygon and
+// no touched polygon has it beyond an outline edge.
+//
+// Precision: the inner loop runs in float, 4 pixels at a time. Each 4-pixel block starts from a
+// value computed in double, so a lane's float error is ~1e-6 px near a threshold; lanes within
+// 1e-4 px of any threshold are re-decided in double, so coverage is the double-precision answer.
+// Depths are rounded away from the viewer by a relative margin that exceeds the float error.
+#include "MaskRasterPaths.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+namespace osgVis::core
+{
+namespace
+{
+constexpr std::uint8_t Touched = 1;
+constexpr std::uint8_t Vetoed = 2;
+constexpr int Lanes = 4;
+// Polygons with more edges are vetoed (never trusted) rather than tracked in a heap array.
+constexpr std::size_t MaxEdges = 64;
+// Float lanes this close (px) to a threshold are re-decided in double.
+constexpr float Ambiguity = 1e-4f;
+// Exceeds the float lanes' relative depth error (a few 2^-24) with room for the final rounding.
+constexpr float DepthRelativeMargin = 1e-6f;
+// Relative size below which areas, cross products and edge lengths count as zero.
+constexpr double RelativeTolerance = 1e-12;
+constexpr float InfiniteDepth = std::numeric_limits<float>::infinity();
+
+struct PixelRange
+{
+    int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+    bool empty() const { return x0 > x1 || y0 > y1; }
+};
+
+// Pixels p of [0, size) whose square grown by `shrink`, [p - s, p + 1 + s], meets [lo, hi]; a hair
+// wider than exact so that rounding never loses a touching pixel.
+bool grownSpan(double lo, double hi, double shrink, std::uint32_t size, int& first, int& last)
+{
+    const double slack = RelativeTolerance * (1.0 + std::abs(lo) + std::abs(hi) + shrink);
+    const double a = std::max(std::ceil(lo - 1.0 - shrink - slack), 0.0);
+    const double b = std::min(std::floor(hi + shrink + slack), double(size) - 1.0);
+    if (!(a <= b))
+        return false;
+    first = int(a);
+    last = int(b);
+    return true;
+}
+
+enum class Shape
+{
+    Convex,
+    Degenerate, // vetoes its grown bounding box
+    NonFinite   // what it touches is unknown: the whole group is untrusted
+};
+
+// One polygon ready for the inner loop. Edge e: f_e(p) = n_e·p + offset_e is the signed distance
+// (px) of p inside the edge line; the grown square centred at p reaches reach_e = (|n.x|+|n.y|)·h
+// along n_e (h = 0.5 + shrink), so it lies inside when f_e ≥ reach_e and is separated when
+// f_e < -reach_e.
+struct PolygonSetup
+{
+    PixelRange pixels; // its grown bounding box, clipped to the mask
+    std::size_t edgeCount = 0;
+    std::array<double, MaxEdges> nx, ny, offset, reach;
+    std::array<bool, MaxEdges> outline;
+    std::array<float, MaxEdges> slope, reachF, insideLimit; // insideLimit: -inf for shared edges
+    // Largest depth over the grown square centred at p, in the affine form v = da·x + db·y + dc:
+    // the smallest 1/depth (perspective) or the largest depth (orthographic) over its corners.
+    double da = 0.0, db = 0.0, dc = 0.0;
+    float depthSlope = 0.0f, depthSlopeReach = 0.0f, depthAbsMargin = 0.0f;
+    bool inverse = true;
+};
+
+Shape setupPolygon(const ScreenPolygon& polygon, double shrink, const OcclusionMask& mask, PolygonSetup& setup)
+{
+    const std::vector<glm::dvec2>& v = polygon.vertices;
+    double minX = std::numeric_limits<double>::infinity(), minY = minX, maxX = -minX, maxY = -minX;
+    for (const glm::dvec2& p : v)
+    {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+            return Shape::NonFinite;
+        minX = std::min(minX, p.x);
+        maxX = std::max(maxX, p.x);
+        minY = std::min(minY, p.y);
+        maxY = std::max(maxY, p.y);
+    }
+    setup.pixels = PixelRange{};
+    if (v.empty())
+        return Shape::Degenerate; // touches nothing
+    PixelRange& r = setup.pixels;
+    if (!grownSpan(minX, maxX, shrink, mask.width(), r.x0, r.x1) ||
+        !grownSpan(minY, maxY, shrink, mask.height(), r.y0, r.y1))
+        r = PixelRange{};
+
+    const DepthPlane& plane = polygon.depth;
+    const std::size_t n = v.size();
+    if (n < 3 || n > MaxEdges || !std::isfinite(plane.a) || !std::isfinite(plane.b) || !std::isfinite(plane.c))
+        return Shape::Degenerate;
+    const double size = std::max(maxX - minX, maxY - minY);
+    double twiceArea = 0.0;
+    for (std::size_t i = 1; i + 1 < n; ++i)
+    {
+        const glm::dvec2 a = v[i] - v[0], b = v[i + 1] - v[0];
+        twiceArea += a.x * b.y - a.y * b.x;
+    }
+    if (!(std::abs(twiceArea) > RelativeTolerance * size * size))
+        return Shape::Degenerate;
+    const double orientation = twiceArea > 0.0 ? 1.0 : -1.0;
+
+    // Convex = every turn the same way (collinear allowed, reversals not) and the direction sweeps
+    // round once (its x and y components change sign at most twice each), which rules out stars.
+    const double h = 0.5 + shrink;
+    std::size_t count = 0;
+    std::array<glm::dvec2, MaxEdges> direction;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const glm::dvec2 d = v[(i + 1) % n] - v[i];
+        const double length = std::sqrt(d.x * d.x + d.y * d.y);
+        if (!(length > RelativeTolerance * size))
+            continue; // a repeated vertex bounds nothing
+        const double nx = -orientation * d.y / length, ny = orientation * d.x / length;
+        direction[count] = d / length;
+        setup.nx[count] = nx;
+        setup.ny[count] = ny;
+        setup.offset[count] = -(nx * v[i].x + ny * v[i].y);
+        setup.reach[count] = (std::abs(nx) + std::abs(ny)) * h;
+        setup.outline[count] = !(i < polygon.sharedEdge.size() && polygon.sharedEdge[i]);
+        setup.slope[count] = float(nx);
+        setup.reachF[count] = float(setup.reach[count]);
+        setup.insideLimit[count] = setup.outline[count] ? setup.reachF[count] : -InfiniteDepth;
+        ++count;
+    }
+    if (count < 3)
+        return Shape::Degenerate;
+    int xSignChanges = 0, ySignChanges = 0;
+    double lastX = 0.0, lastY = 0.0;
+    for (std::size_t i = 0; i < 2 * count; ++i) // twice round, counting the changes of the second lap
+    {
+        const glm::dvec2 a = direction[i % count], b = direction[(i + 1) % count];
+        const double turn = a.x * b.y - a.y * b.x;
+        if (turn * orientation < -RelativeTolerance ||
+            (std::abs(turn) <= RelativeTolerance && a.x * b.x + a.y * b.y < 0.0))
+            return Shape::Degenerate;
+        const bool counted = i >= count;
+        if (std::abs(a.x) > 1e-9)
+        {
+            xSignChanges += counted && lastX * a.x < 0.0;
+            lastX = a.x;
+        }
+        if (std::abs(a.y) > 1e-9)
+        {
+            ySignChanges += counted && lastY * a.y < 0.0;
+            lastY = a.y;
+        }
+    }
+    if (xSignChanges > 2 || ySignChanges > 2)
+        return Shape::Degenerate;
+    setup.edgeCount = count;
+
+    setup.inverse = plane.inverse;
+    setup.da = plane.a;
+    setup.db = plane.b;
+    const double cornerSpread = (std::abs(plane.a) + std::abs(plane.b)) * h;
+    setup.dc = plane.inverse ? plane.c - cornerSpread : plane.c + cornerSpread;
+    setup.depthSlope = float(plane.a);
+    setup.depthSlopeReach = float(Lanes) * std::abs(setup.depthSlope);
+    // Covers the double evaluation's own rounding (terms up to the largest coordinates reached).
+    const double reachX = std::max(std::abs(minX), std::abs(maxX)) + 1.0 + shrink;
+    const double reachY = std::max(std::abs(minY), std::abs(maxY)) + 1.0 + shrink;
+    const double extent = std::max(reachX, double(mask.width())) * std::abs(plane.a) +
+                          std::max(reachY, double(mask.height())) * std::abs(plane.b) + std::abs(plane.c) +
+                          cornerSpread;
+    setup.depthAbsMargin = float(extent * 1e-12);
+    return Shape::Convex;
+}
+
+// One block of 4 pixels of a row, for one polygon: f0 per edge and v0 are the lane-0 values.
+struct BlockInput
+{
+    const float* f0;
+    const PolygonSetup* polygon;
+    float v0;
+};
+
+struct BlockResult
+{
+    int touched = 0, outside = 0, ambiguous = 0; // lane bit masks
+    alignas(16) float depth[Lanes];
+};
+
+void scalarBlock(const BlockInput& in, BlockResult& out)
+{
+    const PolygonSetup& s = *in.polygon;
+    bool touched[Lanes] = {true, true, true, true};
+    bool outside[Lanes] = {}, ambiguous[Lanes] = {};
+    for (std::size_t e = 0; e < s.edgeCount; ++e)
+    {
+        const float negativeReach = -s.reachF[e];
+        for (int j = 0; j < Lanes; ++j)
+        {
+            const float f = in.f0[e] + s.slope[e] * float(j);
+            touched[j] = touched[j] && f >= negativeReach;
+            outside[j] = outside[j] || f < s.insideLimit[e];
+            ambiguous[j] = ambiguous[j] || std::fabs(std::fabs(f) - s.reachF[e]) < Ambiguity;
+        }
+    }
+    out = BlockResult{};
+    for (int j = 0; j < Lanes; ++j)
+    {
+        out.touched |= int(touched[j]) << j;
+        out.outside |= int(outside[j]) << j;
+        out.ambiguous |= int(ambiguous[j]) << j;
+        const float value = in.v0 + s.depthSlope * float(j);
+        const float margin = (std::fabs(value) + s.depthSlopeReach) * DepthRelativeMargin + s.depthAbsMargin;
+        if (s.inverse)
+        {
+            const float w = value - margin;
+            out.depth[j] = w > 0.0f ? 1.0f / w : InfiniteDepth;
+        }
+        else
+            out.depth[j] = value + margin;
+    }
+}
+
+#ifdef __SSE2__
+// The same operations as scalarBlock, four lanes at once (IEEE single precision either way).
+void simdBlock(const BlockInput& in, BlockResult& out)
+{
+    const PolygonSetup& s = *in.polygon;
+    const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    const __m128 ambiguity = _mm_set1_ps(Ambiguity);
+    __m128 touched = _mm_castsi128_ps(_mm_set1_epi32(-1));
+    __m128 outside = _mm_setzero_ps(), ambiguous = _mm_setzero_ps();
+    for (std::size_t e = 0; e < s.edgeCount; ++e)
+    {
+        const __m128 reach = _mm_set1_ps(s.reachF[e]);
+        const __m128 f = _mm_add_ps(_mm_set1_ps(in.f0[e]), _mm_mul_ps(_mm_set1_ps(s.slope[e]), lanes));
+        touched = _mm_and_ps(touched, _mm_cmpge_ps(f, _mm_set1_ps(-s.reachF[e])));
+        outside = _mm_or_ps(outside, _mm_cmplt_ps(f, _mm_set1_ps(s.insideLimit[e])));
+        const __m128 distance = _mm_sub_ps(_mm_andnot_ps(sign, f), reach);
+        ambiguous = _mm_or_ps(ambiguous, _mm_cmplt_ps(_mm_andnot_ps(sign, distance), ambiguity));
+    }
+    out.touched = _mm_movemask_ps(touched);
+    out.outside = _mm_movemask_ps(outside);
+    out.ambiguous = _mm_movemask_ps(ambiguous);
+    const __m128 value = _mm_add_ps(_mm_set1_ps(in.v0), _mm_mul_ps(_mm_set1_ps(s.depthSlope), lanes));
+    const __m128 margin = _mm_add_ps(_mm_mul_ps(_mm_add_ps(_mm_andnot_ps(sign, value), _mm_set1_ps(s.depthSlopeReach)),
+                                                _mm_set1_ps(DepthRelativeMargin)),
+                                     _mm_set1_ps(s.depthAbsMargin));
+    __m128 depth;
+    if (s.inverse)
+    {
+        const __m128 w = _mm_sub_ps(value, margin);
+        const __m128 positive = _mm_cmpgt_ps(w, _mm_setzero_ps());
+        depth = _mm_or_ps(_mm_and_ps(positive, _mm_div_ps(_mm_set1_ps(1.0f), w)),
+                          _mm_andnot_ps(positive, _mm_set1_ps(InfiniteDepth)));
+    }
+    else
+        depth = _mm_add_ps(value, margin);
+    _mm_store_ps(out.depth, depth);
+}
+#endif
+
+// Region of the group: scratch buffers cover it, row-major.
+struct GroupBuffers
+{
+    PixelRange region;
+    std::size_t stride = 0;
+    std::uint8_t* state = nullptr;
+    float* depth = nullptr;
+    std::size_t index(int x, int y) const { return std::size_t(y - region.y0) * stride + std::size_t(x - region.x0); }
+};
+
+void vetoRange(const PixelRange& pixels, GroupBuffers& buffers)
+{
+    for (int y = pixels.y0; y <= pixels.y1; ++y)
+        for (int x = pixels.x0; x <= pixels.x1; ++x)
+            buffers.state[buffers.index(x, y)] |= Vetoed;
+}
+
+void rasterizePolygon(const PolygonSetup& s, bool simd, GroupBuffers& buffers)
+{
+    std::array<double, MaxEdges> rowF;
+    alignas(16) std::array<float, MaxEdges> f0;
+    const PixelRange& p = s.pixels;
+    const double firstCentreX = p.x0 + 0.5;
+    for (int y = p.y0; y <= p.y1; ++y)
+    {
+        const double cy = y + 0.5;
+        for (std::size_t e = 0; e < s.edgeCount; ++e)
+            rowF[e] = s.nx[e] * firstCentreX + s.ny[e] * cy + s.offset[e];
+        const double rowV = s.da * firstCentreX + s.db * cy + s.dc;
+        // Only the row's stretch between the edges can touch: f_e(cx) ≥ -reach_e bounds cx on
+        // one side for each edge not parallel to the row. One pixel of slack absorbs rounding
+        // (the lanes still test every pixel they visit).
+        double lowX = p.x0, highX = p.x1;
+        for (std::size_t e = 0; e < s.edgeCount; ++e)
+        {
+            if (std::abs(s.nx[e]) < 1e-6)
+                continue;
+            const double bound = (-s.reach[e] - s.ny[e] * cy - s.offset[e]) / s.nx[e] - 0.5; // pixel x of cx
+            if (s.nx[e] > 0.0)
+                lowX = std::max(lowX, std::floor(bound) - 1.0);
+            else
+                highX = std::min(highX, std::ceil(bound) + 1.0);
+        }
+        if (!(lowX <= highX))
+            continue;
+        const int spanStart = p.x0 + (int(lowX) - p.x0) / Lanes * Lanes; // stays on the polygon's lane grid
+        const int spanEnd = int(highX);
+        for (int x = spanStart; x <= spanEnd; x += Lanes)
+        {
+            const double dx = x - p.x0;
+            for (std::size_t e = 0; e < s.edgeCount; ++e)
+                f0[e] = float(rowF[e] + s.nx[e] * dx);
+            const BlockInput in{f0.data(), &s, float(rowV + s.da * dx)};
+            BlockResult result;
+#ifdef __SSE2__
+            if (simd)
+                simdBlock(in, result);
+            else
+#endif
+                scalarBlock(in, result);
+            const int lanes = std::min(Lanes, p.x1 - x + 1);
+            const int valid = (1 << lanes) - 1;
+            int touched = result.touched & valid;
+            int outside = result.outside;
+            const int ambiguous = result.ambiguous & valid;
+            if (ambiguous != 0)
+            {
+                for (int j = 0; j < lanes; ++j)
+                {
+                    if (!(ambiguous >> j & 1))
+                        continue;
+                    const double cx = x + j + 0.5;
+                    bool laneTouched = true, laneOutside = false;
+                    for (std::size_t e = 0; e < s.edgeCount; ++e)
+                    {
+                        const double f = s.nx[e] * cx + s.ny[e] * cy + s.offset[e];
+                        laneTouched = laneTouched && f >= -s.reach[e];
+                        laneOutside = laneOutside || (s.outline[e] && f < s.reach[e]);
+                    }
+                    touched = (touched & ~(1 << j)) | int(laneTouched) << j;
+                    outside = (outside & ~(1 << j)) | int(laneOutside) << j;
+                }
+            }
+            if (touched == 0)
+                continue;
+            const std::size_t row = buffers.index(x, y);
+            for (int j = 0; j < lanes; ++j)
+            {
+                if (!(touched >> j & 1))
+                    continue;
+                buffers.state[row + j] |= Touched | (outside >> j & 1 ? Vetoed : 0);
+                buffers.depth[row + j] = std::max(buffers.depth[row + j], result.depth[j]);
+            }
+        }
+    }
+}
+} // namespace
+
+double DepthPlane::maxOverSquare(double x0, double y0, double x1, double y1) const
+{
+    const double corners[4] = {a * x0 + b * y0 + c, a * x1 + b * y0 + c, a * x0 + b * y1 + c, a * x1 + b * y1 + c};
+    const double infinity = std::numeric_limits<double>::infinity();
+    if (inverse)
+    {
+        const double smallest = *std::min_element(corners, corners + 4);
+        return smallest > 0.0 ? 1.0 / smallest : infinity; // NaN: +inf too
+    }
+    const double largest = *std::max_element(corners, corners + 4);
+    return std::isnan(largest) ? infinity : largest;
+}
+
+bool maskRasterHasSimd()
+{
+#ifdef __SSE2__
+    return true;
+#else
+    return false;
+#endif
+}
+
+std::size_t rasterizeOccluderGroupWith(MaskRasterPath path, OcclusionMask& mask, const ScreenPolygon* polygons,
+                                       std::size_t count, double shrink, MaskRasterScratch& scratch)
+{
+    if (count == 0 || mask.width() == 0 || mask.height() == 0 || !std::isfinite(shrink))
+        return 0;
+    shrink = std::max(shrink, 0.0); // a negative shrink would grow the union: never conservative
+
+    // Bounding region of the group's grown polygons; any non-finite polygon spoils the group.
+    PixelRange region{int(mask.width()), int(mask.height()), -1, -1};
+    PolygonSetup setup;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        if (setupPolygon(polygons[i], shrink, mask, setup) == Shape::NonFinite)
+            return 0;
+        if (setup.pixels.empty())
+            continue;
+        region.x0 = std::min(region.x0, setup.pixels.x0);
+        region.y0 = std::min(region.y0, setup.pixels.y0);
+        region.x1 = std::max(region.x1, setup.pixels.x1);
+        region.y1 = std::max(region.y1, setup.pixels.y1);
+    }
+    if (region.empty())
+        return 0;
+
+    GroupBuffers buffers;
+    buffers.region = region;
+    buffers.stride = std::size_t(region.x1 - region.x0 + 1);
+    const std::size_t pixelCount = buffers.stride * std::size_t(region.y1 - region.y0 + 1);
+    scratch.state.assign(pixelCount, 0);
+    scratch.depth.assign(pixelCount, -InfiniteDepth);
+    buffers.state = scratch.state.data();
+    buffers.depth = scratch.depth.data();
+
+    const bool simd = path == MaskRasterPath::Simd;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        const Shape shape = setupPolygon(polygons[i], shrink, mask, setup);
+        if (setup.pixels.empty())
+            continue;
+        if (shape == Shape::Convex)
+            rasterizePolygon(setup, simd, buffers);
+        else
+            vetoRange(setup.pixels, buffers);
+    }
+
+    std::size_t covered = 0;
+    for (int y = region.y0; y <= region.y1; ++y)
+        for (int x = region.x0; x <= region.x1; ++x)
+        {
+            const std::size_t i = buffers.index(x, y);
+            // An infinite depth (the plane reaches the horizon over the pixel) hides nothing.
+            if (buffers.state[i] == Touched && buffers.depth[i] < InfiniteDepth)
+            {
+                mask.cover(std::uint32_t(x), std::uint32_t(y), buffers.depth[i]);
+                ++covered;
+            }
+        }
+    return covered;
+}
+
+std::size_t rasterizeOccluderGroup(OcclusionMask& mask, const ScreenPolygon* polygons, std::size_t count, double shrink,
+                                   MaskRasterScratch& scratch)
+{
+    return rasterizeOccluderGroupWith(MaskRasterPath::Simd, mask, polygons, count, shrink, scratch);
+}
+} // namespace osgVis::core
