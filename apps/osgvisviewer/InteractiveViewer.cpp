@@ -1,5 +1,6 @@
 #include "InteractiveViewer.h"
 
+#include "BuildingTool.h"
 #include "CameraSetup.h"
 #include "CullingModes.h"
 #include "DebugMap.h"
@@ -18,11 +19,15 @@ namespace osgVis::viewer
 {
 namespace
 {
-// Keys of the viewer itself: `m` cycles the culling mode, `t` shows or hides the debug map.
+// Keys of the viewer itself: `m` cycles the culling mode, `t` shows or hides the debug map, `b`
+// drops a building ahead, `B` or Delete deletes the building nearest the centre of the view.
 class ViewerKeys : public osgGA::GUIEventHandler
 {
 public:
-    ViewerKeys(CullingModes& modes, DebugMap& map) : _modes(modes), _map(map) {}
+    ViewerKeys(CullingModes& modes, DebugMap& map, BuildingTool& buildings, const osg::Camera& camera)
+        : _modes(modes), _map(map), _buildings(buildings), _camera(camera)
+    {
+    }
 
     bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter&) override
     {
@@ -40,6 +45,19 @@ public:
             _map.setEnabled(!_map.enabled());
             return true;
         }
+        if (ea.getKey() == 'b')
+        {
+            if (_buildings.dropAhead(_camera.getViewMatrix()))
+                std::cout << "osgvisviewer: dropped a building" << std::endl;
+            return true;
+        }
+        if (ea.getKey() == 'B' || ea.getKey() == osgGA::GUIEventAdapter::KEY_Delete)
+        {
+            const std::string removed = _buildings.removeNearestCentre(_camera.getViewMatrix());
+            std::cout << "osgvisviewer: " << (removed.empty() ? "no building ahead to delete" : "deleted " + removed)
+                      << std::endl;
+            return true;
+        }
         return false;
     }
 
@@ -47,11 +65,15 @@ public:
     {
         usage.addKeyboardMouseBinding("m", "Next culling mode (osg, then every registered module)");
         usage.addKeyboardMouseBinding("t", "Show / hide the top-down map: drawn green, culled red, outside grey");
+        usage.addKeyboardMouseBinding("b", "Drop a building box a few metres ahead");
+        usage.addKeyboardMouseBinding("B", "Delete the building nearest the centre of the view (also Delete)");
     }
 
 private:
     CullingModes& _modes;
     DebugMap& _map;
+    BuildingTool& _buildings;
+    const osg::Camera& _camera;
 };
 
 // Walking speed: crossing the scene takes about twenty seconds.
@@ -84,7 +106,15 @@ int runInteractive(const ViewerScene& scene, const ViewerOptions& options)
 
     viewer.setCameraManipulator(
         new WalkManipulator(scene.walk, defaultSpeed(scene.objects->scene.bounds()), options.recordPath));
-    viewer.addEventHandler(new ViewerKeys(modes, map));
+    // Edits go to the model itself, so they survive mode changes; the current VisibilityGroup (none
+    // in osg mode) re-extracts with stable ids at its next cull.
+    BuildingTool buildings(*scene.model,
+                           [&modes]
+                           {
+                               if (VisibilityGroup* group = modes.visibilityGroup())
+                                   group->dirtyScene();
+                           });
+    viewer.addEventHandler(new ViewerKeys(modes, map, buildings, *camera));
 
     // OSG's usual handlers, with keys moved off w/s/e (walking) and m/t (mode, map).
     osg::ref_ptr<osgViewer::StatsHandler> stats = new osgViewer::StatsHandler;
@@ -100,13 +130,14 @@ int runInteractive(const ViewerScene& scene, const ViewerOptions& options)
     osg::ref_ptr<osgGA::StateSetManipulator> state = new osgGA::StateSetManipulator(camera->getOrCreateStateSet());
     state->setKeyEventCyclePolygonMode('o');
     state->setKeyEventToggleTexturing('x');
+    state->setKeyEventToggleBackfaceCulling('k'); // b drops a building
     viewer.addEventHandler(state.get());
     viewer.addEventHandler(new osgViewer::ScreenCaptureHandler);
     osg::ref_ptr<osgViewer::HelpHandler> help = new osgViewer::HelpHandler(new osg::ApplicationUsage);
     viewer.addEventHandler(help.get());
 
     std::cout << "osgvisviewer: " << scene.name << ", walk " << scene.walkSource << ", mode " << options.mode
-              << " (h: help, m: next mode, t: map, p: play walk)" << std::endl;
+              << " (h: help, m: next mode, t: map, p: play walk, b/B: drop/delete a building)" << std::endl;
     return viewer.run();
 }
 } // namespace osgVis::viewer

@@ -118,8 +118,10 @@ std::string usageText(const std::string& programName)
            "\n"
            "Keys: W/A/S/D or arrows move, Q/E down/up, left-drag looks, wheel changes speed,\n"
            "      m next culling mode, p play the walk, r start/stop recording, t top-down map,\n"
+           "      b drop a building box a few metres ahead, B or Delete delete the building nearest the\n"
+           "      centre of the view (the culling re-extracts with stable object ids),\n"
            "      i statistics (I prints them), h help, f fullscreen, c screenshot, space home,\n"
-           "      o polygon mode, x texturing, l lighting, b back-face culling, n threading model.\n";
+           "      o polygon mode, x texturing, l lighting, k back-face culling, n threading model.\n";
     return out.str();
 }
 } // namespace osgVis::viewer
