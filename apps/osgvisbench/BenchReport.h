@@ -4,13 +4,30 @@
 // meaning in this run (a zero denominator, a baseline mode not run) and print as null.
 #include "BenchMode.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace osgVis::bench
 {
+// Mis-drawn pixels (docs/benchmark.md, "Mis-drawn pixels"): pixels of the oracle's exact ID image
+// at the display resolution whose object the mode culled, i.e. pixels that show the wrong thing.
+struct MisdrawnPixels
+{
+    // Upper bounds (inclusive) of the histogram bins of pixels per frame: 0, 1-4, 5-16, 17-64, 65-256,
+    // 257-1024; the last bin holds everything above.
+    static constexpr std::array<std::uint64_t, 6> BinUpperBounds = {0, 4, 16, 64, 256, 1024};
+    static constexpr std::size_t Bins = BinUpperBounds.size() + 1;
+
+    std::uint32_t framesWithAny = 0;
+    std::uint64_t maxPerFrame = 0;
+    std::optional<double> meanPerFrame;          // over all frames
+    std::array<std::uint32_t, Bins> histogram{}; // frames per bin; sums to the number of views
+};
+
 struct ModeMetrics
 {
     std::uint64_t falseInvisible = 0;        // Σ_v |E(v) \ S(v)|
@@ -22,8 +39,9 @@ struct ModeMetrics
     std::optional<double> cullMsMedian;
     std::optional<double> cullMsP99;
     std::optional<double> fps;
-    std::optional<double> speedupVsOsg; // fps / fps(osg)
-    std::optional<double> fpsVsExact;   // fps / fps(exact)
+    std::optional<double> speedupVsOsg;     // fps / fps(osg)
+    std::optional<double> fpsVsExact;       // fps / fps(exact)
+    std::optional<MisdrawnPixels> misdrawn; // nullopt: the oracle gave no pixel counts
 };
 
 struct ModeResult
@@ -70,6 +88,31 @@ struct ProgressiveRow
     double objectsFraction = 0.0;
 };
 
+// One step of the mask module on its critical frames: median and 99th percentile, ms.
+struct StepTiming
+{
+    std::optional<double> median;
+    std::optional<double> p99;
+};
+
+// One row of the mask Δ sweep (docs/benchmark.md, "Mask sweep"): a mode with a mask stage, re-run
+// cull-only over the bench's views with image-space shrinkage Δ.
+struct MaskSweepRow
+{
+    std::string mode;
+    double delta = 0.0; // Δ, frame pixels
+    std::size_t views = 0;
+    std::size_t criticalFrames = 0;
+    std::optional<double> criticalFraction;
+    StepTiming select, rasterize, pyramid, mark; // over the critical frames
+    std::optional<double> cullMsCriticalMedian;  // whole chain, critical frames
+    std::optional<double> cullMsNonCriticalMedian;
+    std::optional<double> drawnFraction; // mean over the views of tri(S) / tri(scene)
+    std::optional<double> regionMedian;  // median δ (world units) of the critical frames' masks
+    // Critical frames per reason ("first", "stamp-expired", ...), every reason listed.
+    std::vector<std::pair<std::string, std::size_t>> criticalReasons;
+};
+
 struct BenchReport
 {
     std::string scene;
@@ -85,5 +128,6 @@ struct BenchReport
     std::vector<ModeResult> modes; // empty with --cull-only
     SweepReport sweeps;
     std::vector<ProgressiveRow> progressive; // empty unless a mode has a cellportal stage
+    std::vector<MaskSweepRow> maskSweep;     // empty without --mask-deltas
 };
 } // namespace osgVis::bench

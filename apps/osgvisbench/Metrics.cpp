@@ -1,5 +1,6 @@
 #include "Metrics.h"
 
+#include "MisdrawnPixels.h"
 #include "SampleStatistics.h"
 
 #include <algorithm>
@@ -50,6 +51,7 @@ ModeResult measureMode(const BenchMode& mode, const core::Scene& scene, const Or
     result.mode = mode;
     CullTally all, inFrustum;
     double drawnTriangles = 0.0, exactTriangles = 0.0;
+    MisdrawnTally misdrawn;
     for (std::size_t v = 0; v < reference.views.size(); ++v)
     {
         const ViewReference& view = reference.views[v];
@@ -73,6 +75,8 @@ ModeResult measureMode(const BenchMode& mode, const core::Scene& scene, const Or
             if (view.inFrustum.test(object.id))
                 inFrustum.add(!emitted, triangles);
         }
+        if (reference.pixelCounts)
+            misdrawn.add(misdrawnPixels(view, drawn));
         result.metrics.falseInvisible += missed;
         if (missed != 0)
             ++result.viewsWithFalseInvisible;
@@ -88,6 +92,8 @@ ModeResult measureMode(const BenchMode& mode, const core::Scene& scene, const Or
     m.cullMsMedian = median(cullMs);
     m.cullMsP99 = percentile(cullMs, 0.99);
     m.fps = ratio(double(pass.emitted.size()), pass.renderSeconds);
+    if (reference.pixelCounts)
+        m.misdrawn = misdrawn.summary();
     return result;
 }
 

@@ -12,6 +12,13 @@
 
 namespace osgVis::bench
 {
+// One object's pixels in the oracle's exact ID image at the display resolution.
+struct ObjectPixels
+{
+    core::ObjectId id = core::InvalidObject; // InvalidObject: unknown to the extraction
+    std::uint32_t pixels = 0;
+};
+
 struct ViewReference
 {
     core::VisibleSet exact;     // E(v) in scene ids
@@ -19,12 +26,16 @@ struct ViewReference
     // Objects the oracle saw that the extraction does not know: no mode can draw them as objects, so
     // they count as false-invisible for every mode.
     std::uint32_t unknownVisible = 0;
+    // Every object with a pixel in the display-resolution image (empty unless OracleReference::
+    // pixelCounts); objects found only by the supersampled render have none here.
+    std::vector<ObjectPixels> pixels;
 };
 
 struct OracleReference
 {
     std::vector<ViewReference> views;
     unsigned supersample = 1;
+    bool pixelCounts = false; // the oracle counts pixels per object (IdBufferOracle::Result::pixels)
     std::vector<std::uint32_t> viewsWithSupersampleExtras; // views where the K× render found more
     std::uint64_t supersampleExtras = 0;                   // objects found only at K×, all views
 };

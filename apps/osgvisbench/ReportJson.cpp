@@ -1,5 +1,7 @@
 #include "ReportJson.h"
 
+#include "MisdrawnPixels.h"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -38,7 +40,34 @@ std::string jsonNumber(const std::optional<double>& value)
     return text;
 }
 
-void writeMode(std::ostream& out, const ModeResult& result)
+// Integers as JSON numbers, or null when the oracle counted no pixels.
+template <typename Integer> std::string jsonCount(const std::optional<MisdrawnPixels>& misdrawn, Integer value)
+{
+    return misdrawn ? std::to_string(value) : "null";
+}
+
+void writeMisdrawn(std::ostream& out, const std::optional<MisdrawnPixels>& misdrawn, std::size_t views)
+{
+    const MisdrawnPixels m = misdrawn.value_or(MisdrawnPixels{});
+    const std::optional<double> fraction =
+        misdrawn && views ? std::optional<double>(double(m.framesWithAny) / double(views)) : std::nullopt;
+    out << "      \"misdrawn_frames\": " << jsonCount(misdrawn, m.framesWithAny) << ",\n"
+        << "      \"misdrawn_frames_fraction\": " << jsonNumber(fraction) << ",\n"
+        << "      \"misdrawn_max\": " << jsonCount(misdrawn, m.maxPerFrame) << ",\n"
+        << "      \"misdrawn_mean\": " << jsonNumber(m.meanPerFrame) << ",\n"
+        << "      \"misdrawn_histogram\": ";
+    if (!misdrawn)
+        out << "null,\n";
+    else
+    {
+        out << "{";
+        for (std::size_t bin = 0; bin < MisdrawnPixels::Bins; ++bin)
+            out << (bin ? ", " : "") << jsonString(misdrawnBinLabel(bin)) << ": " << m.histogram[bin];
+        out << "},\n";
+    }
+}
+
+void writeMode(std::ostream& out, const ModeResult& result, std::size_t views)
 {
     const ModeMetrics& m = result.metrics;
     out << "    " << jsonString(result.mode.name) << ": {\n"
@@ -50,8 +79,9 @@ void writeMode(std::ostream& out, const ModeResult& result)
         << "      \"drawn_fraction\": " << jsonNumber(m.drawnFraction) << ",\n"
         << "      \"cull_ms_median\": " << jsonNumber(m.cullMsMedian) << ",\n"
         << "      \"cull_ms_p99\": " << jsonNumber(m.cullMsP99) << ",\n"
-        << "      \"fps\": " << jsonNumber(m.fps) << ",\n"
-        << "      \"speedup_vs_osg\": " << jsonNumber(m.speedupVsOsg) << ",\n"
+        << "      \"fps\": " << jsonNumber(m.fps) << ",\n";
+    writeMisdrawn(out, m.misdrawn, views);
+    out << "      \"speedup_vs_osg\": " << jsonNumber(m.speedupVsOsg) << ",\n"
         << "      \"fps_vs_exact\": " << jsonNumber(m.fpsVsExact) << "\n"
         << "    }";
 }
@@ -79,6 +109,36 @@ void writeSweeps(std::ostream& out, const SweepReport& sweeps)
             << (sweeps.determinism[i].identicalAcrossThreads ? "true" : "false");
     out << "}\n";
 }
+void writeMaskSweepRow(std::ostream& out, const MaskSweepRow& row)
+{
+    out << "    {\"mode\": " << jsonString(row.mode) << ", \"delta\": " << jsonNumber(row.delta)
+        << ", \"views\": " << row.views << ", \"critical_frames\": " << row.criticalFrames
+        << ", \"critical_fraction\": " << jsonNumber(row.criticalFraction);
+    const std::pair<const char*, const StepTiming*> steps[] = {
+        {"select", &row.select}, {"rasterize", &row.rasterize}, {"pyramid", &row.pyramid}, {"mark", &row.mark}};
+    for (const auto& [name, step] : steps)
+        out << ",\n     \"" << name << "_ms_median\": " << jsonNumber(step->median) << ", \"" << name
+            << "_ms_p99\": " << jsonNumber(step->p99);
+    out << ",\n     \"cull_ms_critical_median\": " << jsonNumber(row.cullMsCriticalMedian)
+        << ", \"cull_ms_noncritical_median\": " << jsonNumber(row.cullMsNonCriticalMedian)
+        << ", \"drawn_fraction\": " << jsonNumber(row.drawnFraction)
+        << ", \"region_median\": " << jsonNumber(row.regionMedian) << ",\n     \"critical_reasons\": {";
+    for (std::size_t i = 0; i < row.criticalReasons.size(); ++i)
+        out << (i ? ", " : "") << jsonString(row.criticalReasons[i].first) << ": " << row.criticalReasons[i].second;
+    out << "}}";
+}
+
+void writeMaskSweep(std::ostream& out, const std::vector<MaskSweepRow>& rows)
+{
+    out << "  \"mask_sweep\": [";
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+        out << (i ? ",\n" : "\n");
+        writeMaskSweepRow(out, rows[i]);
+    }
+    out << (rows.empty() ? "],\n" : "\n  ],\n");
+}
+
 void writeProgressive(std::ostream& out, const std::vector<ProgressiveRow>& rows)
 {
     out << "  \"progressive\": [";
@@ -111,11 +171,12 @@ void writeReportJson(std::ostream& out, const BenchReport& report)
         << "  \"modes\": {\n";
     for (std::size_t i = 0; i < report.modes.size(); ++i)
     {
-        writeMode(out, report.modes[i]);
+        writeMode(out, report.modes[i], report.views);
         out << (i + 1 < report.modes.size() ? ",\n" : "\n");
     }
     out << "  },\n";
     writeProgressive(out, report.progressive);
+    writeMaskSweep(out, report.maskSweep);
     writeSweeps(out, report.sweeps);
     out << "}\n";
 }

@@ -1,5 +1,7 @@
 #include "ReportTable.h"
 
+#include "MisdrawnPixels.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <ostream>
@@ -75,6 +77,64 @@ void writeSweepTable(std::ostream& out, const SweepReport& sweeps)
             out << "NO (" << determinism.differingViews << " answers differ)\n";
     }
 }
+void writeMisdrawnTable(std::ostream& out, const BenchReport& report)
+{
+    out << "\nmis-drawn pixels per frame (pixels of the oracle's exact image at " << report.width << "x"
+        << report.height << " showing an object the mode culled):\n";
+    const std::size_t nameWidth =
+        nameColumnWidth(report.modes, [](const ModeResult& result) { return result.mode.name; });
+    out << leftCell("mode", nameWidth) << cell("frames>0", 9) << cell("%", 7) << cell("max", 8) << cell("mean", 9);
+    for (std::size_t bin = 0; bin < MisdrawnPixels::Bins; ++bin)
+        out << cell(misdrawnBinLabel(bin), 9);
+    out << "\n";
+    for (const ModeResult& result : report.modes)
+    {
+        if (!result.metrics.misdrawn)
+            continue;
+        const MisdrawnPixels& m = *result.metrics.misdrawn;
+        const std::optional<double> percent =
+            report.views ? std::optional<double>(double(m.framesWithAny) / double(report.views)) : std::nullopt;
+        out << leftCell(result.mode.name, nameWidth) << cell(std::to_string(m.framesWithAny), 9)
+            << cell(formatted(percent, "%.1f", 100.0), 7) << cell(std::to_string(m.maxPerFrame), 8)
+            << cell(formatted(m.meanPerFrame, "%.2f"), 9);
+        for (std::uint32_t frames : m.histogram)
+            out << cell(std::to_string(frames), 9);
+        out << "\n";
+    }
+}
+
+std::string stepCell(const StepTiming& step)
+{
+    return formatted(step.median, "%.2f") + "/" + formatted(step.p99, "%.2f");
+}
+
+// The reasons with at least one frame: "first:1 stamp-expired:4".
+std::string reasonsCell(const MaskSweepRow& row)
+{
+    std::string text;
+    for (const auto& [reason, frames] : row.criticalReasons)
+        if (frames != 0)
+            text += (text.empty() ? "" : " ") + reason + ":" + std::to_string(frames);
+    return text.empty() ? "-" : text;
+}
+
+void writeMaskSweepTable(std::ostream& out, const std::vector<MaskSweepRow>& rows)
+{
+    out << "\nmask sweep over the image-space shrinkage Delta (cull only; step ms med/p99 over critical frames):\n";
+    const std::size_t nameWidth = nameColumnWidth(rows, [](const MaskSweepRow& row) { return row.mode; });
+    out << leftCell("mode", nameWidth) << cell("Delta", 7) << cell("views", 7) << cell("crit%", 7) << cell("select", 13)
+        << cell("rasterize", 13) << cell("pyramid", 13) << cell("mark", 13) << cell("cull crit", 10)
+        << cell("cull other", 11) << cell("drawn%", 8) << cell("delta", 9) << "  critical reasons\n";
+    for (const MaskSweepRow& row : rows)
+        out << leftCell(row.mode, nameWidth) << cell(formatted(row.delta, "%g"), 7)
+            << cell(std::to_string(row.views), 7) << cell(formatted(row.criticalFraction, "%.1f", 100.0), 7)
+            << cell(stepCell(row.select), 13) << cell(stepCell(row.rasterize), 13) << cell(stepCell(row.pyramid), 13)
+            << cell(stepCell(row.mark), 13) << cell(formatted(row.cullMsCriticalMedian, "%.2f"), 10)
+            << cell(formatted(row.cullMsNonCriticalMedian, "%.3f"), 11)
+            << cell(formatted(row.drawnFraction, "%.1f", 100.0), 8) << cell(formatted(row.regionMedian, "%.3g"), 9)
+            << "  " << reasonsCell(row) << "\n";
+}
+
 void writeProgressiveTable(std::ostream& out, const std::vector<ProgressiveRow>& rows)
 {
     out << "\nprogressive cell-portal table (cull only, mean over the views):\n";
@@ -97,10 +157,15 @@ void writeReportTable(std::ostream& out, const BenchReport& report)
         << report.viewsWithSupersampleExtras.size() << " views)\n\n";
     if (!report.modes.empty())
         writeModeTable(out, report);
+    if (std::any_of(report.modes.begin(), report.modes.end(),
+                    [](const ModeResult& result) { return result.metrics.misdrawn.has_value(); }))
+        writeMisdrawnTable(out, report);
     if (!report.progressive.empty())
         writeProgressiveTable(out, report.progressive);
     if (!report.sweeps.points.empty())
         writeSweepTable(out, report.sweeps);
+    if (!report.maskSweep.empty())
+        writeMaskSweepTable(out, report.maskSweep);
     out.flush();
 }
 } // namespace osgVis::bench

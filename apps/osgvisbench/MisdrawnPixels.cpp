@@ -1,0 +1,50 @@
+#include "MisdrawnPixels.h"
+
+namespace osgVis::bench
+{
+std::uint64_t misdrawnPixels(const ViewReference& view, const core::VisibleSet& drawn)
+{
+    std::uint64_t pixels = 0;
+    for (const ObjectPixels& object : view.pixels)
+        if (object.id == core::InvalidObject || !drawn.test(object.id))
+            pixels += object.pixels;
+    return pixels;
+}
+
+std::size_t misdrawnBin(std::uint64_t pixels)
+{
+    std::size_t bin = 0;
+    while (bin < MisdrawnPixels::BinUpperBounds.size() && pixels > MisdrawnPixels::BinUpperBounds[bin])
+        ++bin;
+    return bin;
+}
+
+std::string misdrawnBinLabel(std::size_t bin)
+{
+    const auto& upper = MisdrawnPixels::BinUpperBounds;
+    if (bin == 0)
+        return std::to_string(upper[0]);
+    if (bin >= upper.size())
+        return ">" + std::to_string(upper.back());
+    return std::to_string(upper[bin - 1] + 1) + "-" + std::to_string(upper[bin]);
+}
+
+void MisdrawnTally::add(std::uint64_t pixels)
+{
+    ++_frames;
+    _sum += double(pixels);
+    if (pixels != 0)
+        ++_summary.framesWithAny;
+    if (pixels > _summary.maxPerFrame)
+        _summary.maxPerFrame = pixels;
+    ++_summary.histogram[misdrawnBin(pixels)];
+}
+
+MisdrawnPixels MisdrawnTally::summary() const
+{
+    MisdrawnPixels summary = _summary;
+    if (_frames != 0)
+        summary.meanPerFrame = _sum / double(_frames);
+    return summary;
+}
+} // namespace osgVis::bench
