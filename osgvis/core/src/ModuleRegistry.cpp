@@ -2,6 +2,7 @@
 
 #include <osgVis/core/CellPortalModule.h>
 #include <osgVis/core/FrustumModule.h>
+#include <osgVis/core/MaskModule.h>
 #include <osgVis/core/OctreeModule.h>
 
 #include <map>
@@ -31,6 +32,20 @@ struct Registry
         };
         for (const auto& [name, stage] : cellPortalStages)
             factories[name] = [stage = stage] { return std::make_unique<CellPortalModule>(stage); };
+        factories["mask"] = [] { return std::make_unique<MaskModule>(); };
+        factories["mask-approx"] = []
+        {
+            MaskOptions approx;
+            approx.shrink = MaskShrink::FusedUnion;
+            approx.shrinkPixels = 4.0; // the paper's variant at the shrinkage its figures use
+            return std::make_unique<MaskModule>(approx);
+        };
+        factories["mask-distance"] = []
+        {
+            MaskOptions distance;
+            distance.measure = OccluderMeasure::Distance;
+            return std::make_unique<MaskModule>(distance);
+        };
     }
 
     std::mutex mutex;

@@ -37,13 +37,12 @@ struct MaskOptions
 {
     MaskShrink shrink = MaskShrink::PerOccluder;
     OccluderMeasure measure = OccluderMeasure::CoverageImportance;
-    double shrinkPixels = 4.0;        // Δ, in frame pixels (the viewport's)
+    double shrinkPixels = 2.0;        // Δ, in frame pixels (the viewport's)
     std::uint32_t maskDownscale = 4;  // mask = viewport / this (rounded up), at least 16×16
     std::uint32_t occluders = 64;     // R: occluder objects per critical frame
     double minOccluderDistance = 0.0; // D: occluders nearer than this to the eye are not used (world
                                       // units; the near plane's reach is always added)
     double maxEyeSpeed = 15.0;        // V, world units per second of walk time
-    double criticalTurnDegrees = 10.0; // view direction change that forces a critical frame
     std::uint32_t stopObjects = 8;    // ρ: marking stops at nodes with fewer objects and tests them one by one
     enum class Tree { Auto, Planar, Full } tree = Tree::Auto; // Auto: Planar for flat (2.5-D) scenes
     std::uint32_t maxLeafObjects = 4;
@@ -70,7 +69,7 @@ public:
         First,         // no mask yet
         StampExpired,  // walk time passed t_c + δ/V
         LeftRegion,    // the eye moved farther than δ from the critical eye (faster than V)
-        Turned,        // view direction changed more than criticalTurnDegrees
+        Turned,        // the view turned: marks hold for the critical frame's orientation only
         OccluderGone,  // an occluder of the current mask was deleted or moved
         ViewChanged,   // projection or viewport changed
     };
@@ -92,6 +91,11 @@ public:
     const OcclusionMask& mask() const;
 
 private:
+    // True when the box lies behind the current mask for every eye of the current δ-ball; a box
+    // that is covered but not deep enough is halved up to `splits` times.
+    bool objectBehindMask(const Aabb& box, int splits) const;
+    // The critical frame's marking pass over the kd-tree.
+    void markHidden(Statistics& stats);
     struct Impl;
     MaskOptions _options;
     std::unique_ptr<Impl> _impl;

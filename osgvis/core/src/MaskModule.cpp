@@ -1,0 +1,588 @@
+#include <osgVis/core/MaskModule.h>
+
+#include "MaskOccluderGroups.h"
+#include "MaskOccluderSelection.h"
+#include "MaskProjection.h"
+
+#include <osgVis/core/MaskRasterizer.h>
+#include <osgVis/core/OccluderBuilder.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <unordered_set>
+
+namespace osgVis::core
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+// Halvings of an object's box when the whole box is covered but not deep enough (2^3 pieces at most).
+constexpr int kObjectSplits = 4;
+double millisecondsSince(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+bool sameOrientation(const View& a, const View& b)
+{
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            if (std::abs(a.viewMatrix[c][r] - b.viewMatrix[c][r]) > 1e-12)
+                return false;
+    return true;
+}
+
+bool sameProjection(const View& a, const View& b)
+{
+    return a.projectionMatrix == b.projectionMatrix && a.viewportWidth == b.viewportWidth &&
+           a.viewportHeight == b.viewportHeight;
+}
+
+Vec3 viewDirection(const View& view)
+{
+    const Mat4 inverse = glm::inverse(view.viewMatrix);
+    return glm::normalize(Vec3(inverse * Vec4(0.0, 0.0, -1.0, 0.0)));
+}
+
+// Polygons of a few objects (inserted during the walk), built on a scene of just those objects,
+// then renumbered into the module's polygon list.
+void appendObjectPolygons(const Scene& scene, const std::vector<ObjectId>& ids, const OccluderBuildOptions& options,
+                          std::vector<OccluderPolygon>& polygons)
+{
+    Scene part;
+    for (ObjectId id : ids)
+    {
+        const SceneObject& source = scene.objects[id];
+        SceneObject object = source;
+        object.id = static_cast<ObjectId>(part.objects.size());
+        object.firstTriangle = static_cast<std::uint32_t>(part.triangles.size());
+        if (std::size_t(source.firstTriangle) + source.triangleCount <= scene.triangles.size())
+            part.triangles.insert(part.triangles.end(), scene.triangles.begin() + source.firstTriangle,
+                                  scene.triangles.begin() + source.firstTriangle + source.triangleCount);
+        else
+            object.triangleCount = 0;
+        part.objects.push_back(std::move(object));
+    }
+    std::vector<OccluderPolygon> built = buildOccluderPolygons(part, options);
+    const std::uint32_t base = static_cast<std::uint32_t>(polygons.size());
+    for (OccluderPolygon& polygon : built)
+    {
+        polygon.owner = polygon.owner == InvalidObject ? InvalidObject : ids[polygon.owner];
+        for (std::uint32_t& n : polygon.neighbours)
+            n = n == NoNeighbour ? NoNeighbour : n + base;
+        polygons.push_back(std::move(polygon));
+    }
+}
+} // namespace
+
+struct MaskModule::Impl
+{
+    const Scene* scene = nullptr;
+    MaskKdTree tree;
+    std::vector<OccluderPolygon> polygons;
+    std::vector<std::vector<std::uint32_t>> polygonsOf; // per object
+    std::vector<std::uint32_t> statedPolygons;          // stated occluders without an owner object
+    std::vector<std::uint8_t> usable;                   // per object: may be an occluder
+    std::vector<std::uint8_t> moving;                   // per object: dynamic or moved: tested every frame
+    std::vector<std::uint8_t> present;
+    std::vector<ObjectId> movingIds;
+
+    OcclusionMask mask;
+    MaskRasterScratch scratch;
+    MaskGroups groups;
+    MaskProjection projection; // of the latest critical frame
+
+    // Critical frames whose stamps may still be alive, oldest first.
+    struct CriticalFrame
+    {
+        Vec3 eye;
+        double time, delta;
+        std::vector<ObjectId> occluders;
+    };
+    std::deque<CriticalFrame> alive;
+    bool haveMask = false;
+    View criticalView;
+    Vec3 criticalDirection{0.0};
+    double delta = 0.0, maskShift = 0.0, validUntil = 0.0;
+    bool occluderGone = false;
+
+    Statistics statistics;
+    DebugRecord* debug = nullptr;
+
+    void forgetMarks()
+    {
+        tree.clearMarks();
+        alive.clear();
+        haveMask = false;
+    }
+};
+
+MaskModule::MaskModule(const MaskOptions& options) : _options(options), _impl(std::make_unique<Impl>()) {}
+MaskModule::~MaskModule() = default;
+
+const char* MaskModule::name() const
+{
+    if (_options.shrink == MaskShrink::FusedUnion)
+        return "mask-approx";
+    return _options.measure == OccluderMeasure::Distance ? "mask-distance" : "mask";
+}
+
+void MaskModule::setDebugRecord(DebugRecord* record)
+{
+    _impl->debug = record;
+}
+
+MaskModule::Statistics MaskModule::lastStatistics() const
+{
+    return _impl->statistics;
+}
+
+const OcclusionMask& MaskModule::mask() const
+{
+    return _impl->mask;
+}
+
+void MaskModule::setScene(const Scene& scene)
+{
+    _scene = &scene;
+    Impl& m = *_impl;
+    const std::vector<SceneObject>& objects = scene.objects;
+    m.scene = &scene;
+    m.polygons = buildOccluderPolygons(scene);
+    m.polygonsOf.assign(objects.size(), {});
+    m.statedPolygons.clear();
+    for (std::uint32_t i = 0; i < m.polygons.size(); ++i)
+    {
+        const ObjectId owner = m.polygons[i].owner;
+        if (owner == InvalidObject)
+            m.statedPolygons.push_back(i);
+        else if (owner < objects.size())
+            m.polygonsOf[owner].push_back(i);
+    }
+    m.usable.assign(objects.size(), 0);
+    m.moving.assign(objects.size(), 0);
+    m.present.assign(objects.size(), 1);
+    m.movingIds.clear();
+    std::vector<Aabb> bounds(objects.size());
+    std::vector<bool> inTree(objects.size(), false);
+    for (const SceneObject& object : objects)
+    {
+        bounds[object.id] = object.bounds;
+        const bool dynamic = (object.flags & OBJECT_DYNAMIC) != 0;
+        m.moving[object.id] = dynamic;
+        if (dynamic)
+            m.movingIds.push_back(object.id);
+        inTree[object.id] = !dynamic && (object.flags & OBJECT_ALWAYS_VISIBLE) == 0;
+        m.usable[object.id] = !dynamic && !m.polygonsOf[object.id].empty();
+    }
+    // 2.5-D input (a city: flat compared with its footprint) gets the paper's 2-D tree.
+    MaskKdTree::Split split = MaskKdTree::Split::Full;
+    if (_options.tree == MaskOptions::Tree::Planar)
+        split = MaskKdTree::Split::Planar;
+    else if (_options.tree == MaskOptions::Tree::Auto)
+    {
+        const Vec3 extent = scene.bounds().extent();
+        const double smallest = std::min({extent.x, extent.y, extent.z});
+        const double largest = std::max({extent.x, extent.y, extent.z});
+        if (largest > 0.0 && smallest < 0.25 * largest)
+            split = MaskKdTree::Split::Planar;
+    }
+    m.tree.build(bounds, inTree, split, _options.maxLeafObjects);
+    m.forgetMarks();
+    m.statistics = Statistics();
+}
+
+void MaskModule::sceneChanged(const SceneChange& change)
+{
+    if (_scene)
+        sceneReplaced(*_scene, {change});
+}
+
+void MaskModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes)
+{
+    Impl& m = *_impl;
+    if (!_scene)
+    {
+        setScene(scene);
+        return;
+    }
+    _scene = &scene;
+    m.scene = &scene;
+    const std::size_t count = scene.objects.size();
+    m.polygonsOf.resize(count);
+    m.usable.resize(count, 0);
+    m.moving.resize(count, 0);
+    m.present.resize(count, 0);
+
+    // Every occluder that alive stamps may rest on.
+    std::unordered_set<ObjectId> occluding;
+    for (const Impl::CriticalFrame& frame : m.alive)
+        occluding.insert(frame.occluders.begin(), frame.occluders.end());
+
+    const auto makeMoving = [&](ObjectId id)
+    {
+        if (!m.moving[id])
+            m.movingIds.push_back(id);
+        m.moving[id] = 1;
+        m.usable[id] = 0;
+        m.tree.remove(id);
+    };
+    for (const SceneChange& change : changes)
+    {
+        std::vector<ObjectId> newStatic;
+        for (ObjectId id : change.objects)
+        {
+            if (id >= count)
+                continue;
+            const SceneObject& object = scene.objects[id];
+            switch (change.kind)
+            {
+            case SceneChange::Kind::Removed:
+                if (occluding.count(id))
+                    m.occluderGone = true;
+                m.present[id] = 0;
+                m.usable[id] = 0;
+                m.tree.remove(id);
+                break;
+            case SceneChange::Kind::Moved:
+                // Rule: a moved object never occludes again and is tested against the mask every
+                // frame instead of carrying stamps; moving an occluder invalidates the marks.
+                if (occluding.count(id))
+                    m.occluderGone = true;
+                m.present[id] = 1;
+                makeMoving(id);
+                break;
+            case SceneChange::Kind::Inserted:
+                m.present[id] = 1;
+                if ((object.flags & OBJECT_DYNAMIC) != 0)
+                {
+                    makeMoving(id);
+                    break;
+                }
+                m.moving[id] = 0;
+                if ((object.flags & OBJECT_ALWAYS_VISIBLE) == 0)
+                    m.tree.insert(id, object.bounds); // clears the stamps on its way down
+                if (m.polygonsOf[id].empty())
+                    newStatic.push_back(id);
+                else
+                    m.usable[id] = 1;
+                break;
+            }
+        }
+        if (!newStatic.empty())
+        {
+            const std::size_t before = m.polygons.size();
+            appendObjectPolygons(scene, newStatic, OccluderBuildOptions(), m.polygons);
+            for (std::size_t i = before; i < m.polygons.size(); ++i)
+                m.polygonsOf[m.polygons[i].owner].push_back(static_cast<std::uint32_t>(i));
+            for (ObjectId id : newStatic)
+                m.usable[id] = !m.polygonsOf[id].empty();
+        }
+    }
+    m.movingIds.erase(std::remove_if(m.movingIds.begin(), m.movingIds.end(),
+                                     [&](ObjectId id) { return !m.present[id]; }),
+                      m.movingIds.end());
+    if (m.occluderGone)
+        m.forgetMarks();
+    // Lazy updates leave loose boxes behind; rebuild once they pile up (marks go with it).
+    if (m.tree.updatesSinceBuild() > std::max<std::size_t>(64, count / 4))
+    {
+        m.tree.rebuild();
+        m.forgetMarks();
+    }
+}
+
+void MaskModule::cull(const View& view, VisibleSet& visible)
+{
+    Impl& m = *_impl;
+    m.statistics = Statistics();
+    Statistics& stats = m.statistics;
+    if (!_scene || m.tree.empty())
+        return;
+    if (m.debug)
+        m.debug->clear();
+    const double t = view.time;
+    const Vec3 eye = view.eye;
+
+    // Stamps are sound only while the eye stays inside the ball of the critical frame that wrote
+    // them; the speed bound V guarantees that, but an eye faster than V (or time running
+    // backwards) must not trust them.
+    while (!m.alive.empty() && t >= m.alive.front().time + m.alive.front().delta / _options.maxEyeSpeed)
+        m.alive.pop_front();
+    CriticalReason reason = CriticalReason::None;
+    bool trusted = true;
+    for (const Impl::CriticalFrame& frame : m.alive)
+        trusted = trusted && t >= frame.time && glm::length(eye - frame.eye) <= frame.delta;
+    if (!trusted)
+    {
+        m.forgetMarks();
+        reason = CriticalReason::LeftRegion;
+    }
+    if (reason == CriticalReason::None)
+    {
+        if (m.occluderGone)
+            reason = CriticalReason::OccluderGone;
+        else if (!m.haveMask)
+            reason = CriticalReason::First;
+        else if (!sameProjection(view, m.criticalView))
+        {
+            // The near plane decides which occluder parts are drawn at all.
+            m.forgetMarks();
+            reason = CriticalReason::ViewChanged;
+        }
+        else if (t >= m.validUntil)
+            reason = CriticalReason::StampExpired;
+        else if (glm::length(eye - m.criticalView.eye) > m.delta)
+            reason = CriticalReason::LeftRegion;
+        else if (!sameOrientation(view, m.criticalView))
+        {
+            // Marks cover the critical frame (grown by Δ) only: objects partly outside it were
+            // judged by their part inside.
+            m.forgetMarks();
+            reason = CriticalReason::Turned;
+        }
+    }
+    m.occluderGone = false;
+
+    const double maskScale = double(_options.maskDownscale == 0 ? 1 : _options.maskDownscale);
+    const std::uint32_t maskWidth = std::max<std::uint32_t>(16, std::uint32_t(std::ceil(view.viewportWidth / maskScale)));
+    const std::uint32_t maskHeight = std::max<std::uint32_t>(16, std::uint32_t(std::ceil(view.viewportHeight / maskScale)));
+    // Δ in mask pixels: the largest image shift allowed for points at the occluders' depth.
+    const double shift = _options.shrinkPixels * double(maskWidth) / std::max(1u, view.viewportWidth);
+    // A border around the frame holds what an eye δ away may see at the frame's edges; occluders
+    // are clipped farther out still, so their outline cannot sweep in from beyond what was
+    // rasterized.
+    const std::uint32_t border = static_cast<std::uint32_t>(std::ceil(shift)) + 1;
+    const double clipMargin = border + 2.0 * shift + 2.0;
+
+    if (reason != CriticalReason::None)
+    {
+        if (!m.projection.set(view, maskWidth, maskHeight, border, clipMargin))
+        {
+            // Orthographic or unusual projections: no occlusion from this module.
+            m.forgetMarks();
+            return;
+        }
+        stats.critical = reason;
+        Clock::time_point start = Clock::now();
+        const double nearDepth = std::max(_options.minOccluderDistance, 2.0 * m.projection.nearPlane());
+        MaskSelectionInput input;
+        input.tree = &m.tree;
+        input.objects = &_scene->objects;
+        input.usable = &m.usable;
+        input.view = &view;
+        input.projection = &m.projection;
+        input.eye = eye;
+        input.minDistance = _options.minOccluderDistance;
+        input.sampleRadius = m.delta;
+        input.count = _options.occluders;
+        input.measure = _options.measure;
+        const std::vector<ObjectId> occluders = selectMaskOccluders(input);
+        std::vector<std::uint32_t> selected = m.statedPolygons;
+        // The nearest depth any rasterized point can have bounds the image shift (δ).
+        double occluderDepth = std::numeric_limits<double>::max();
+        for (ObjectId id : occluders)
+        {
+            selected.insert(selected.end(), m.polygonsOf[id].begin(), m.polygonsOf[id].end());
+            const std::optional<MaskRect> rect = m.projection.project(_scene->objects[id].bounds);
+            occluderDepth = std::min(occluderDepth, rect ? std::max(rect->nearestDepth, nearDepth) : nearDepth);
+        }
+        if (!m.statedPolygons.empty())
+            occluderDepth = nearDepth;
+        const double delta = selected.empty() ? 0.0 : m.projection.deltaFor(shift, occluderDepth);
+        stats.selectMs = millisecondsSince(start);
+
+        start = Clock::now();
+        buildMaskGroups(m.polygons, selected, m.projection, nearDepth, delta, m.groups);
+        m.mask.reset(m.projection.width(), m.projection.height());
+        const bool perOccluder = _options.shrink == MaskShrink::PerOccluder;
+        for (std::size_t g = 0; g < m.groups.groupCount(); ++g)
+            rasterizeOccluderGroup(m.mask, m.groups.polygons.data() + m.groups.groupStart[g],
+                                   m.groups.groupStart[g + 1] - m.groups.groupStart[g], perOccluder ? shift : 0.0,
+                                   m.scratch);
+        if (!perOccluder && shift > 0.0)
+            m.mask.shrinkUnion(static_cast<std::uint32_t>(std::ceil(shift)));
+        stats.rasterizeMs = millisecondsSince(start);
+
+        start = Clock::now();
+        m.mask.buildPyramid();
+        stats.pyramidMs = millisecondsSince(start);
+
+        m.haveMask = true;
+        m.criticalView = view;
+        m.criticalDirection = viewDirection(view);
+        m.delta = delta;
+        m.maskShift = perOccluder ? shift : 0.0;
+        m.validUntil = t + delta / _options.maxEyeSpeed;
+        m.alive.push_back({eye, t, delta, occluders});
+
+        start = Clock::now();
+        markHidden(stats);
+        stats.markMs = millisecondsSince(start);
+        stats.occluderObjects = static_cast<std::uint32_t>(occluders.size());
+        stats.occluderPolygons = static_cast<std::uint32_t>(m.groups.polygons.size());
+        stats.groups = static_cast<std::uint32_t>(m.groups.groupCount());
+        stats.coveredPixels = m.mask.coveredPixels();
+        if (m.debug)
+            for (std::uint32_t index : selected)
+                m.debug->activeOccluders.push_back(m.polygons[index].vertices);
+    }
+    stats.maskWidth = m.mask.width();
+    stats.maskHeight = m.mask.height();
+    stats.delta = m.delta;
+    stats.validUntil = m.validUntil;
+    if (!m.haveMask)
+        return;
+
+    // Stamped subtrees and objects drop out; moving objects are tested against the mask, which
+    // holds for every eye of the current ball.
+    std::uint32_t culled = 0;
+    std::vector<std::uint32_t> stack{m.tree.root()};
+    while (!stack.empty())
+    {
+        const std::uint32_t index = stack.back();
+        stack.pop_back();
+        const MaskKdTree::Node& node = m.tree.node(index);
+        if (node.objectCount == 0)
+            continue;
+        const bool nodeHidden = node.stamp > t;
+        if (!nodeHidden && !node.leaf())
+        {
+            stack.push_back(node.right);
+            stack.push_back(node.left);
+            continue;
+        }
+        if (nodeHidden)
+        {
+            // The whole subtree: collect its leaves.
+            std::vector<std::uint32_t> below{index};
+            while (!below.empty())
+            {
+                const MaskKdTree::Node& n = m.tree.node(below.back());
+                below.pop_back();
+                if (!n.leaf())
+                {
+                    below.push_back(n.left);
+                    below.push_back(n.right);
+                    continue;
+                }
+                for (ObjectId id : n.objects)
+                    if (visible.test(id))
+                        visible.clear(id), ++culled;
+            }
+            continue;
+        }
+        for (ObjectId id : node.objects)
+            if (m.tree.objectStamp(id) > t && visible.test(id))
+                visible.clear(id), ++culled;
+    }
+    for (ObjectId id : m.movingIds)
+    {
+        if (!visible.test(id))
+            continue;
+        if (objectBehindMask(_scene->objects[id].bounds, kObjectSplits))
+            visible.clear(id), ++culled;
+    }
+    stats.culled = culled;
+}
+
+bool MaskModule::objectBehindMask(const Aabb& box, int splits) const
+{
+    const Impl& m = *_impl;
+    if (!m.haveMask || box.empty() || !box.finite())
+        return false;
+    const std::optional<MaskRect> rect = m.projection.project(box);
+    if (!rect)
+        return false;
+    // The target's own image moves by up to Δ too: grow its rectangle by that much. Depth: from an
+    // eye δ away, the occluder's point is at most δ farther and the target's at most δ nearer.
+    // Float storage of the mask may round a depth down: keep a relative margin for it.
+    const double g = m.maskShift;
+    const double nearest = rect->nearestDepth - 2.0 * m.delta;
+    const float limit = static_cast<float>(nearest * (1.0 - 1e-5));
+    if (!(limit > 0.0f))
+        return false;
+    // Only what an eye of the ball can see in this frame matters: its image lies within Δ of the
+    // frame. A box entirely beyond that is out of view for the whole ball.
+    const double b = m.projection.border();
+    const double x0 = std::max(rect->x0 - g, b - g), x1 = std::min(rect->x1 + g, b + m.projection.frameWidth() + g);
+    const double y0 = std::max(rect->y0 - g, b - g), y1 = std::min(rect->y1 + g, b + m.projection.frameHeight() + g);
+    if (x0 > x1 || y0 > y1)
+        return true;
+    if (m.mask.rectHidden(x0, y0, x1, y1, limit))
+        return true;
+    // One nearest depth for a whole box is weak where occluders recede (a street's side walls):
+    // halves along the box's longest axis have nearer-to-true depths and tighter rectangles.
+    if (splits <= 0 || !m.mask.rectHidden(x0, y0, x1, y1, std::numeric_limits<float>::infinity()))
+        return false;
+    // Split where the box's view depth varies most.
+    const Vec3 spread = box.extent() * glm::abs(m.criticalDirection);
+    const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
+    Aabb lower = box, upper = box;
+    lower.max[axis] = upper.min[axis] = box.center()[axis];
+    return objectBehindMask(lower, splits - 1) && objectBehindMask(upper, splits - 1);
+}
+
+void MaskModule::markHidden(Statistics& stats)
+{
+    Impl& m = *_impl;
+    // A stamp hides while it is later than the walk time; with δ = 0 it still has to hide in the
+    // critical frame itself.
+    const double now = m.criticalView.time;
+    const double until = std::max(m.validUntil, std::nextafter(now, std::numeric_limits<double>::infinity()));
+    const View& view = m.criticalView;
+    std::vector<std::uint32_t> stack{m.tree.root()};
+    while (!stack.empty())
+    {
+        const std::uint32_t index = stack.back();
+        stack.pop_back();
+        const MaskKdTree::Node& node = m.tree.node(index);
+        if (node.objectCount == 0 || node.bounds.empty())
+            continue;
+        // Outside the view: nothing was rasterized there; frustum culling is another stage's job.
+        if (view.frustum.classify(node.bounds) == Containment::Outside)
+            continue;
+        ++stats.nodesTested;
+        if (objectBehindMask(node.bounds, 0))
+        {
+            m.tree.markNode(index, until);
+            ++stats.nodesMarked;
+            if (m.debug)
+                m.debug->nodes.push_back({node.bounds, NodeState::Invisible, 0});
+            continue;
+        }
+        if (!node.leaf() && node.objectCount >= _options.stopObjects)
+        {
+            stack.push_back(node.right);
+            stack.push_back(node.left);
+            continue;
+        }
+        // Below ρ objects: test them one by one.
+        std::vector<std::uint32_t> below{index};
+        while (!below.empty())
+        {
+            const MaskKdTree::Node& n = m.tree.node(below.back());
+            below.pop_back();
+            if (!n.leaf())
+            {
+                below.push_back(n.left);
+                below.push_back(n.right);
+                continue;
+            }
+            for (ObjectId id : n.objects)
+            {
+                const SceneObject& object = _scene->objects[id];
+                if (objectBehindMask(object.bounds, kObjectSplits))
+                {
+                    m.tree.markObject(id, until);
+                    ++stats.objectsMarked;
+                }
+            }
+        }
+        if (m.debug)
+            m.debug->nodes.push_back({node.bounds, NodeState::Visible, 0});
+    }
+}
+} // namespace osgVis::core

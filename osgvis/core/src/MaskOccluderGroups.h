@@ -1,0 +1,26 @@
+#pragma once
+// Turns the critical frame's occluder polygons into rasterizer groups: polygons that face the eye
+// the same way from every point of the δ-ball, connected through shared edges, clipped to the
+// near depth and the grown frame (clip edges become outline edges), projected to the mask.
+// A polygon whose plane passes within δ of the eye could turn edge-on or flip inside the ball,
+// so it is left out; so is a one-sided polygon seen from behind.
+#include "MaskProjection.h"
+
+#include <osgVis/core/OccluderPolygon.h>
+
+#include <vector>
+
+namespace osgVis::core
+{
+struct MaskGroups
+{
+    std::vector<ScreenPolygon> polygons;
+    std::vector<std::uint32_t> groupStart; // group g = polygons[groupStart[g], groupStart[g+1])
+    std::size_t groupCount() const { return groupStart.empty() ? 0 : groupStart.size() - 1; }
+};
+
+// `selected` are indices into `polygons`. `nearDepth` is the clipping depth, `delta` the eye's
+// freedom δ. Deterministic.
+void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::vector<std::uint32_t>& selected,
+                     const MaskProjection& projection, double nearDepth, double delta, MaskGroups& out);
+} // namespace osgVis::core

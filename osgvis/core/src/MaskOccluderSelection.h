@@ -1,0 +1,36 @@
+#pragma once
+// Occluder selection of the mask method: a priority queue over kd-tree nodes, nearest first from
+// the eye, gathers candidate occluder objects inside the view; the best R by the chosen measure
+// become the critical frame's occluders.
+//
+// Coverage importance (our reading of the paper's φ): φ(ξ) = min over sampled eyes s of
+// coverage_s(ξ) × mindist_s(ξ), where coverage is the fraction of the frame the object's box covers
+// and mindist its distance from s; the samples are the eye and the six points δ away along the
+// axes, so an occluder is valued by what it still does anywhere in the region the mask must serve.
+// Multiplying by the distance prefers occluders that keep δ (and so the stamps' lifetime) large.
+#include "MaskProjection.h"
+
+#include <osgVis/core/MaskKdTree.h>
+#include <osgVis/core/MaskModule.h>
+
+#include <vector>
+
+namespace osgVis::core
+{
+struct MaskSelectionInput
+{
+    const MaskKdTree* tree = nullptr;
+    const std::vector<SceneObject>* objects = nullptr;
+    const std::vector<std::uint8_t>* usable = nullptr; // per object: may be an occluder now
+    const View* view = nullptr;
+    const MaskProjection* projection = nullptr;
+    Vec3 eye{0.0};
+    double minDistance = 0.0;  // D
+    double sampleRadius = 0.0; // δ of the previous critical frame, for the φ samples
+    std::uint32_t count = 64;  // R
+    OccluderMeasure measure = OccluderMeasure::CoverageImportance;
+};
+
+// Object ids, best first. Deterministic.
+std::vector<ObjectId> selectMaskOccluders(const MaskSelectionInput& input);
+} // namespace osgVis::core
