@@ -53,6 +53,28 @@ std::vector<unsigned> parsePositiveList(const std::string& flag, const std::stri
     return values;
 }
 
+// A comma-separated list of numbers in [0, limit], e.g. "--mask-deltas 0,0.5,1,2".
+std::vector<double> parseNonNegativeList(const std::string& flag, const std::string& text, double limit)
+{
+    std::vector<double> values;
+    for (const std::string& item : splitList(text, ','))
+    {
+        // note: digits and one '.' only, so "1e3", "inf", "-1" and "0x2" are all rejected
+        const bool number = !item.empty() && item.find_first_not_of("0123456789.") == std::string::npos &&
+                            item.find('.') == item.rfind('.') && item != ".";
+        if (!number)
+            throw UsageError(flag + " expects non-negative numbers, got '" + item + "'");
+        const double value = std::strtod(item.c_str(), nullptr);
+        if (value > limit)
+            throw UsageError(flag + " values must lie between 0 and " + std::to_string(int(limit)) + ", got '" + item +
+                             "'");
+        values.push_back(value);
+    }
+    if (values.empty())
+        throw UsageError(flag + " is empty");
+    return values;
+}
+
 void parseSize(const std::string& text, unsigned& width, unsigned& height)
 {
     const auto x = text.find_first_of("xX");
@@ -70,8 +92,9 @@ std::string benchUsage()
     return "usage: osgvisbench (--scene FILE | --generate office|city|floor|tetra [--triangles N] [--seed S])\n"
            "                   [--walk FILE] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
            "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
-           "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--cull-only] [--json OUT.json] [--help]\n"
+           "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8] [--cull-only]\n"
            "                   [--dynamic]\n"
+           "                   [--json OUT.json] [--help]\n"
            "\n"
            "Renders every mode over the same walk in one process and measures it against the\n"
            "exact-visibility oracle (docs/benchmark.md). A module chain is written with '+'.\n"
@@ -81,11 +104,21 @@ std::string benchUsage()
            "--speeds, --threads: also time each module-chain mode's cull alone (no rendering) with\n"
            "  the observer S times faster (every S-th walk key) under T TBB threads, and check that\n"
            "  every thread count gives the same visible sets. A missing list means speed 1 or\n"
-           "  TBB's default thread count. --cull-only runs just this sweep (no oracle, no GL).\n"
+           "  TBB's default thread count.\n"
+           "--mask-deltas: also run every mode with a mask stage (mask, mask-approx, mask-distance,\n"
+           "  e.g. frustum+mask) cull-only over the same views once per image-space shrinkage\n"
+           "  Delta (frame pixels; the mode's own options otherwise) and report the fraction of\n"
+           "  critical frames and their reasons, the median/p99 ms of each step of a critical\n"
+           "  frame (select, rasterize, pyramid, mark), the median cull ms of critical and other\n"
+           "  frames, and the drawn fraction.\n"
+           "--cull-only: run just these sweeps (no oracle, no GL).\n"
            "--dynamic: a dynamic walk (osg and module-chain modes): 12 cars drive along the walk's\n"
            "  streets every frame, 3 buildings are dropped on existing ones at 1/4 and at 1/2 of\n"
            "  the views, 3 are deleted at 1/3 and at 2/3 (seeded by --seed); the oracle renders\n"
            "  every frame's scene, and the number of changes applied is printed.\n"
+           "Every rendered mode also gets its mis-drawn pixels: pixels of the oracle's exact image\n"
+           "  (display resolution) showing an object the mode culled (where the oracle counts\n"
+           "  pixels per object). Approximate modes report false-invisible objects, never fail.\n"
            "Exit status: 0 ok, 1 a conservative mode culled a visible object, gave different\n"
            "visible sets at different thread counts, or the run failed; 2 bad command line.\n";
 }
@@ -142,6 +175,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.speeds = parsePositiveList(flag, value(), 1000);
         else if (flag == "--threads")
             options.threads = parsePositiveList(flag, value(), 256);
+        else if (flag == "--mask-deltas")
+            options.maskDeltas = parseNonNegativeList(flag, value(), 1000.0);
         else if (flag == "--cull-only")
             options.cullOnly = true;
         else if (flag == "--dynamic")
@@ -160,10 +195,10 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             throw UsageError("--modes contains an empty name");
     if (options.supersample < 1 || options.supersample > 8)
         throw UsageError("--supersample must lie between 1 and 8");
-    if (options.dynamic && (options.cullOnly || options.sweeps()))
+    if (options.dynamic && (options.cullOnly || options.sweeps() || options.maskSweep()))
         throw UsageError("--dynamic renders a walk against the oracle: no --cull-only, --speeds, --threads or --mask-deltas");
-    if (options.cullOnly && !options.sweeps())
-        throw UsageError("--cull-only needs a sweep: give --speeds and/or --threads");
+    if (options.cullOnly && !options.sweeps() && !options.maskSweep())
+        throw UsageError("--cull-only needs a sweep: give --speeds, --threads and/or --mask-deltas");
     return options;
 }
 } // namespace osgVis::bench

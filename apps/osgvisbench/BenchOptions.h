@@ -29,12 +29,14 @@ struct BenchOptions
     bool cube = false;                // --cube (or --fov 360): six cube-face views per walk key
     std::vector<unsigned> speeds;     // --speeds 1,2,4: cull-only sweep over observer speeds
     std::vector<unsigned> threads;    // --threads 1,2: cull-only sweep over TBB thread counts
-    bool cullOnly = false;            // --cull-only: the sweep alone, no oracle and no rendering
+    std::vector<double> maskDeltas;   // --mask-deltas 0,1,2: cull-only Δ sweep of the mask modes
+    bool cullOnly = false;            // --cull-only: the sweeps alone, no oracle and no rendering
     bool dynamic = false;             // --dynamic: cars, dropped and deleted buildings during the walk (DynamicWalk)
     bool help = false;                // --help
     std::string commandLine;          // argv joined, recorded in the JSON
 
     bool sweeps() const { return !speeds.empty() || !threads.empty(); }
+    bool maskSweep() const { return !maskDeltas.empty(); }
 };
 
 // Throws UsageError naming the offending argument.

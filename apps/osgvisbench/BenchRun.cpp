@@ -6,6 +6,7 @@
 #include "DerivedWalks.h"
 #include "EmittedObjects.h"
 #include "ExactReplay.h"
+#include "MaskSweep.h"
 #include "Metrics.h"
 #include "ModeGraph.h"
 #include "ModePass.h"
@@ -105,7 +106,7 @@ BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& 
     report.supersample = options.supersample;
     // note: the shared extraction keeps no triangles; object-space occluders and cells are made of them
     osg::ref_ptr<ExtractedScene> withTriangles;
-    if (options.sweeps() || wantsProgressiveTable(modes))
+    if (options.sweeps() || options.maskSweep() || wantsProgressiveTable(modes))
         withTriangles = extractScene(*scene.model);
     // Before the rendered passes: a bake made here is registered, so their cellportal modes reuse it.
     if (wantsProgressiveTable(modes))
@@ -118,6 +119,15 @@ BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& 
             runCullSweeps(withTriangles->scene, scene.walk, modes, {options.speeds, options.threads, options.cube});
         if (report.sweeps.points.empty())
             std::cerr << "osgvisbench: warning: no module-chain mode to sweep (osg, osg-oq and exact are not swept)"
+                      << std::endl;
+    }
+    if (options.maskSweep())
+    {
+        // The rendered pass's views, so drawn fractions compare with the main table's.
+        report.maskSweep = runMaskSweep(withTriangles->scene, walk, modes, options.maskDeltas);
+        if (report.maskSweep.empty())
+            std::cerr << "osgvisbench: warning: --mask-deltas: no mode has a mask stage (mask, mask-approx, "
+                         "mask-distance)"
                       << std::endl;
     }
     return report;
