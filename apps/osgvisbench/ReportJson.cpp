@@ -1,7 +1,5 @@
 #include "ReportJson.h"
 
-#include "MisdrawnPixels.h"
-
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -56,14 +54,15 @@ void writeMisdrawn(std::ostream& out, const std::optional<MisdrawnPixels>& misdr
         << "      \"misdrawn_max\": " << jsonCount(misdrawn, m.maxPerFrame) << ",\n"
         << "      \"misdrawn_mean\": " << jsonNumber(m.meanPerFrame) << ",\n"
         << "      \"misdrawn_histogram\": ";
+    // note: an array, not an object keyed by bin: mode objects stay flat (one level of braces)
     if (!misdrawn)
         out << "null,\n";
     else
     {
-        out << "{";
+        out << "[";
         for (std::size_t bin = 0; bin < MisdrawnPixels::Bins; ++bin)
-            out << (bin ? ", " : "") << jsonString(misdrawnBinLabel(bin)) << ": " << m.histogram[bin];
-        out << "},\n";
+            out << (bin ? ", " : "") << m.histogram[bin];
+        out << "],\n";
     }
 }
 
