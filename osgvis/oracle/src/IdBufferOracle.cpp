@@ -42,7 +42,8 @@ IdBufferOracle::Result IdBufferOracle::visible(const osg::Matrixd& view, const o
 {
     std::fill(_seenDisplay.begin(), _seenDisplay.end(), 0);
     std::fill(_seenSupersampled.begin(), _seenSupersampled.end(), 0);
-    _display->render(view, projection, _seenDisplay);
+    _pixelsDisplay.assign(_objects.size(), 0);
+    _display->render(view, projection, _seenDisplay, &_pixelsDisplay);
     if (_supersampled)
         _supersampled->render(view, projection, _seenSupersampled);
 
@@ -50,10 +51,14 @@ IdBufferOracle::Result IdBufferOracle::visible(const osg::Matrixd& view, const o
     for (std::uint32_t i = 0; i < _objects.size(); ++i)
     {
         if (_seenDisplay[i])
+        {
             result.visible.push_back(i);
+            result.pixels.push_back(_pixelsDisplay[i]);
+        }
         else if (_seenSupersampled[i])
         {
             result.visible.push_back(i);
+            result.pixels.push_back(0);
             ++result.onlyInSupersampled;
         }
     }

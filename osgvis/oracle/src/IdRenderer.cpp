@@ -102,7 +102,7 @@ void IdRenderer::drawFrame()
     _viewer->renderingTraversals();
 }
 
-std::size_t IdRenderer::collectIds(std::vector<std::uint8_t>& seen)
+std::size_t IdRenderer::collectIds(std::vector<std::uint8_t>& seen, std::vector<std::uint32_t>* pixelCounts)
 {
     const std::size_t pixels = std::size_t(_image->s()) * std::size_t(_image->t());
     const unsigned char* data = _image->data();
@@ -113,6 +113,8 @@ std::size_t IdRenderer::collectIds(std::vector<std::uint8_t>& seen)
         std::uint32_t rgba;
         std::memcpy(&rgba, data + 4 * p, 4);
         const std::uint32_t idPlusOne = idPlusOneOfPixel(rgba);
+        if (pixelCounts && idPlusOne != 0 && idPlusOne <= pixelCounts->size())
+            ++(*pixelCounts)[idPlusOne - 1];
         if (idPlusOne == previous)
             continue; // runs of one id are the common case
         previous = idPlusOne;
@@ -127,7 +129,8 @@ std::size_t IdRenderer::collectIds(std::vector<std::uint8_t>& seen)
     return found;
 }
 
-void IdRenderer::render(const osg::Matrixd& view, const osg::Matrixd& projection, std::vector<std::uint8_t>& seen)
+void IdRenderer::render(const osg::Matrixd& view, const osg::Matrixd& projection, std::vector<std::uint8_t>& seen,
+                        std::vector<std::uint32_t>* pixels)
 {
     osg::Camera* camera = _viewer->getCamera();
     camera->setViewMatrix(view);
@@ -137,7 +140,7 @@ void IdRenderer::render(const osg::Matrixd& view, const osg::Matrixd& projection
     _opaqueDepth->setNodeMask(0u);
     _transparentIds->setNodeMask(0u);
     drawFrame();
-    collectIds(seen);
+    collectIds(seen, pixels);
     if (_transparentIds->getNumChildren() == 0)
         return;
 
@@ -149,6 +152,6 @@ void IdRenderer::render(const osg::Matrixd& view, const osg::Matrixd& projection
     _transparentIds->setAllChildrenOn();
     do
         drawFrame();
-    while (collectIds(seen) != 0);
+    while (collectIds(seen, pixels) != 0);
 }
 } // namespace osgVis::oracle

@@ -28,13 +28,16 @@ public:
     IdRenderer& operator=(const IdRenderer&) = delete;
 
     // Sets seen[i] = 1 for every object i with a pixel in this image; seen must be zeroed, objectCount long.
-    void render(const osg::Matrixd& view, const osg::Matrixd& projection, std::vector<std::uint8_t>& seen);
+    // With `pixels` (zeroed, objectCount long): pixels[i] += the pixels object i shows (a transparent
+    // object's pixels also count for what shows through it).
+    void render(const osg::Matrixd& view, const osg::Matrixd& projection, std::vector<std::uint8_t>& seen,
+                std::vector<std::uint32_t>* pixels = nullptr);
 
 private:
     void drawFrame();
     // Marks the ids in the image; returns how many were new. Newly seen transparent objects leave the
     // transparent switch, so the next pass shows what was behind them.
-    std::size_t collectIds(std::vector<std::uint8_t>& seen);
+    std::size_t collectIds(std::vector<std::uint8_t>& seen, std::vector<std::uint32_t>* pixelCounts);
 
     osg::ref_ptr<osgViewer::Viewer> _viewer;
     osg::ref_ptr<osg::Image> _image;

@@ -42,6 +42,9 @@ public:
     {
         std::vector<std::uint32_t> visible;  // indices into objects(), ascending
         std::size_t onlyInSupersampled = 0;  // of those, found only by the supersampled render
+        // Parallel to visible: the object's pixels in the display-resolution image (0 for those found
+        // only by the supersampled render).
+        std::vector<std::uint32_t> pixels;
     };
     // view and projection are used as given (no near/far recomputation, no small-feature culling).
     Result visible(const osg::Matrixd& view, const osg::Matrixd& projection);
@@ -53,5 +56,6 @@ private:
     std::unique_ptr<IdRenderer> _supersampled; // supersample× width × height, or null
     std::vector<std::uint8_t> _seenDisplay;    // per object, reused between calls
     std::vector<std::uint8_t> _seenSupersampled;
+    std::vector<std::uint32_t> _pixelsDisplay;
 };
 } // namespace osgVis::oracle
