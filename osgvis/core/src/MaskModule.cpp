@@ -98,14 +98,24 @@ struct MaskModule::Impl
     struct CriticalFrame
     {
         Vec3 eye;
-        double time, delta;
+        double time;
+        double deltaMin, deltaMax; // over the marks it wrote
         std::vector<ObjectId> occluders;
     };
     std::deque<CriticalFrame> alive;
     bool haveMask = false;
     View criticalView;
     Vec3 criticalDirection{0.0};
-    double delta = 0.0, maskShift = 0.0, validUntil = 0.0;
+    double delta = 0.0, validUntil = 0.0, criticalAfter = 0.0;
+    double shift = 0.0;     // Δ in mask pixels
+    double maskShift = 0.0; // what targets grow by: Δ for `mask`, 0 for `mask-approx`
+    // δ per 8 × 8 pixel tile: the least δ of the groups whose rectangle reaches the tile, so a
+    // target hidden by pixels there stays hidden for eyes that far away.
+    static constexpr std::uint32_t kTile = 8;
+    std::uint32_t tilesX = 0, tilesY = 0;
+    std::vector<double> tileDelta;
+    // Marks of the latest critical frame: (stamp, objects), for the time of the next one.
+    std::vector<std::pair<double, std::uint32_t>> stamps;
     bool occluderGone = false;
 
     Statistics statistics;
@@ -309,12 +319,19 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
     // Stamps are sound only while the eye stays inside the ball of the critical frame that wrote
     // them; the speed bound V guarantees that, but an eye faster than V (or time running
     // backwards) must not trust them.
-    while (!m.alive.empty() && t >= m.alive.front().time + m.alive.front().delta / _options.maxEyeSpeed)
+    const double speed = _options.maxEyeSpeed;
+    while (!m.alive.empty() && t >= m.alive.front().time + m.alive.front().deltaMax / speed)
         m.alive.pop_front();
     CriticalReason reason = CriticalReason::None;
     bool trusted = true;
     for (const Impl::CriticalFrame& frame : m.alive)
-        trusted = trusted && t >= frame.time && glm::length(eye - frame.eye) <= frame.delta;
+    {
+        // Each stamp t_k + δ/V holds while the eye is within its δ of the critical eye: surely so
+        // inside the smallest δ, and otherwise as long as the eye kept to the speed V.
+        const double moved = glm::length(eye - frame.eye);
+        trusted = trusted && t >= frame.time &&
+                  (moved <= frame.deltaMin || moved <= speed * (t - frame.time) * (1.0 - 1e-12));
+    }
     if (!trusted)
     {
         m.forgetMarks();
@@ -332,10 +349,8 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
             m.forgetMarks();
             reason = CriticalReason::ViewChanged;
         }
-        else if (t >= m.validUntil)
+        else if (t >= m.criticalAfter)
             reason = CriticalReason::StampExpired;
-        else if (glm::length(eye - m.criticalView.eye) > m.delta)
-            reason = CriticalReason::LeftRegion;
         else if (!sameOrientation(view, m.criticalView))
         {
             // Marks cover the critical frame (grown by Δ) only: objects partly outside it were
@@ -381,21 +396,13 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
         input.measure = _options.measure;
         const std::vector<ObjectId> occluders = selectMaskOccluders(input);
         std::vector<std::uint32_t> selected = m.statedPolygons;
-        // The nearest depth any rasterized point can have bounds the image shift (δ).
-        double occluderDepth = std::numeric_limits<double>::max();
         for (ObjectId id : occluders)
-        {
             selected.insert(selected.end(), m.polygonsOf[id].begin(), m.polygonsOf[id].end());
-            const std::optional<MaskRect> rect = m.projection.project(_scene->objects[id].bounds);
-            occluderDepth = std::min(occluderDepth, rect ? std::max(rect->nearestDepth, nearDepth) : nearDepth);
-        }
-        if (!m.statedPolygons.empty())
-            occluderDepth = nearDepth;
-        const double delta = selected.empty() ? 0.0 : m.projection.deltaFor(shift, occluderDepth);
         stats.selectMs = millisecondsSince(start);
 
         start = Clock::now();
-        buildMaskGroups(m.polygons, selected, m.projection, nearDepth, delta, m.groups);
+        buildMaskGroups(m.polygons, selected, m.projection, nearDepth, shift, m.groups);
+        fillTileDeltas(shift);
         m.mask.reset(m.projection.width(), m.projection.height());
         const bool perOccluder = _options.shrink == MaskShrink::PerOccluder;
         for (std::size_t g = 0; g < m.groups.groupCount(); ++g)
@@ -413,14 +420,38 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
         m.haveMask = true;
         m.criticalView = view;
         m.criticalDirection = viewDirection(view);
-        m.delta = delta;
+        m.shift = shift;
         m.maskShift = perOccluder ? shift : 0.0;
-        m.validUntil = t + delta / _options.maxEyeSpeed;
-        m.alive.push_back({eye, t, delta, occluders});
 
         start = Clock::now();
+        m.stamps.clear();
         markHidden(stats);
         stats.markMs = millisecondsSince(start);
+        // Stamps run out one by one; the next critical frame comes when the marks of half the
+        // hidden objects have expired (or at once when nothing was marked).
+        double deltaMin = std::numeric_limits<double>::max(), deltaMax = 0.0;
+        std::uint64_t marked = 0;
+        for (const auto& [until, objects] : m.stamps)
+        {
+            const double delta = (until - t) * speed;
+            deltaMin = std::min(deltaMin, delta);
+            deltaMax = std::max(deltaMax, delta);
+            marked += objects;
+        }
+        std::sort(m.stamps.begin(), m.stamps.end());
+        m.criticalAfter = t;
+        std::uint64_t sum = 0;
+        for (const auto& [until, objects] : m.stamps)
+            if ((sum += objects) * 2 >= marked)
+            {
+                m.criticalAfter = until;
+                break;
+            }
+        if (m.stamps.empty())
+            deltaMin = 0.0;
+        m.delta = deltaMin;
+        m.validUntil = t + deltaMin / speed;
+        m.alive.push_back({eye, t, deltaMin, deltaMax, occluders});
         stats.occluderObjects = static_cast<std::uint32_t>(occluders.size());
         stats.occluderPolygons = static_cast<std::uint32_t>(m.groups.polygons.size());
         stats.groups = static_cast<std::uint32_t>(m.groups.groupCount());
@@ -433,6 +464,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
     stats.maskHeight = m.mask.height();
     stats.delta = m.delta;
     stats.validUntil = m.validUntil;
+    stats.criticalAfter = m.criticalAfter;
     if (!m.haveMask)
         return;
 
@@ -482,13 +514,15 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
     {
         if (!visible.test(id))
             continue;
-        if (objectBehindMask(_scene->objects[id].bounds, kObjectSplits))
+        double delta = 0.0;
+        if (objectBehindMask(_scene->objects[id].bounds, kObjectSplits, delta) &&
+            glm::length(eye - m.criticalView.eye) <= delta)
             visible.clear(id), ++culled;
     }
     stats.culled = culled;
 }
 
-bool MaskModule::objectBehindMask(const Aabb& box, int splits) const
+bool MaskModule::objectBehindMask(const Aabb& box, int splits, double& delta) const
 {
     const Impl& m = *_impl;
     if (!m.haveMask || box.empty() || !box.finite())
@@ -496,33 +530,77 @@ bool MaskModule::objectBehindMask(const Aabb& box, int splits) const
     const std::optional<MaskRect> rect = m.projection.project(box);
     if (!rect)
         return false;
-    // The target's own image moves by up to Δ too: grow its rectangle by that much. Depth: from an
-    // eye δ away, the occluder's point is at most δ farther and the target's at most δ nearer.
-    // Float storage of the mask may round a depth down: keep a relative margin for it.
-    const double g = m.maskShift;
-    const double nearest = rect->nearestDepth - 2.0 * m.delta;
-    const float limit = static_cast<float>(nearest * (1.0 - 1e-5));
-    if (!(limit > 0.0f))
-        return false;
     // Only what an eye of the ball can see in this frame matters: its image lies within Δ of the
-    // frame. A box entirely beyond that is out of view for the whole ball.
+    // frame. A box entirely beyond that is out of view for the whole ball. The target's own image
+    // moves by up to Δ too: its rectangle grows by that much.
+    const double g = m.maskShift;
     const double b = m.projection.border();
     const double x0 = std::max(rect->x0 - g, b - g), x1 = std::min(rect->x1 + g, b + m.projection.frameWidth() + g);
     const double y0 = std::max(rect->y0 - g, b - g), y1 = std::min(rect->y1 + g, b + m.projection.frameHeight() + g);
     if (x0 > x1 || y0 > y1)
+    {
+        // Out of view: stays so while the box's own image moves by less than Δ.
+        delta = m.projection.deltaFor(m.shift, rect->nearestDepth);
         return true;
+    }
+    delta = tileDeltaOver(x0, y0, x1, y1);
+    if (!(delta < std::numeric_limits<double>::max()))
+        return false; // no occluder anywhere near
+    // Depth: from an eye δ away, the occluder's point is at most δ farther and the target's at most
+    // δ nearer. Float storage of the mask may round a depth down: keep a relative margin for it.
+    const double nearest = rect->nearestDepth - 2.0 * delta;
+    const float limit = static_cast<float>(nearest * (1.0 - 1e-5));
+    if (!(limit > 0.0f))
+        return false;
     if (m.mask.rectHidden(x0, y0, x1, y1, limit))
         return true;
     // One nearest depth for a whole box is weak where occluders recede (a street's side walls):
-    // halves along the box's longest axis have nearer-to-true depths and tighter rectangles.
+    // halves along the axis where the box's view depth varies most have nearer-to-true depths.
     if (splits <= 0 || !m.mask.rectHidden(x0, y0, x1, y1, std::numeric_limits<float>::infinity()))
         return false;
-    // Split where the box's view depth varies most.
     const Vec3 spread = box.extent() * glm::abs(m.criticalDirection);
     const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
     Aabb lower = box, upper = box;
     lower.max[axis] = upper.min[axis] = box.center()[axis];
-    return objectBehindMask(lower, splits - 1) && objectBehindMask(upper, splits - 1);
+    double lowerDelta = 0.0, upperDelta = 0.0;
+    if (!objectBehindMask(lower, splits - 1, lowerDelta) || !objectBehindMask(upper, splits - 1, upperDelta))
+        return false;
+    delta = std::min(lowerDelta, upperDelta);
+    return true;
+}
+
+double MaskModule::tileDeltaOver(double x0, double y0, double x1, double y1) const
+{
+    const Impl& m = *_impl;
+    const auto tile = [](double v, std::uint32_t count)
+    { return std::min<std::uint32_t>(count - 1, static_cast<std::uint32_t>(std::max(0.0, v) / Impl::kTile)); };
+    double delta = std::numeric_limits<double>::max();
+    for (std::uint32_t ty = tile(y0, m.tilesY); ty <= tile(y1, m.tilesY); ++ty)
+        for (std::uint32_t tx = tile(x0, m.tilesX); tx <= tile(x1, m.tilesX); ++tx)
+            delta = std::min(delta, m.tileDelta[ty * m.tilesX + tx]);
+    return delta;
+}
+
+void MaskModule::fillTileDeltas(double shift)
+{
+    Impl& m = *_impl;
+    m.tilesX = (m.projection.width() + Impl::kTile - 1) / Impl::kTile;
+    m.tilesY = (m.projection.height() + Impl::kTile - 1) / Impl::kTile;
+    m.tileDelta.assign(std::size_t(m.tilesX) * m.tilesY, std::numeric_limits<double>::max());
+    const auto tile = [](double v, std::uint32_t count)
+    { return std::min<std::uint32_t>(count - 1, static_cast<std::uint32_t>(std::max(0.0, v) / Impl::kTile)); };
+    for (std::size_t g = 0; g < m.groups.groupCount(); ++g)
+    {
+        const glm::dvec4& r = m.groups.groupRect[g];
+        if (r.x > r.z || r.y > r.w)
+            continue;
+        const double delta = m.groups.groupDelta[g];
+        // Pixels the group covers lie within its rectangle grown by the shrink and one pixel.
+        const double grow = shift + 1.0;
+        for (std::uint32_t ty = tile(r.y - grow, m.tilesY); ty <= tile(r.w + grow, m.tilesY); ++ty)
+            for (std::uint32_t tx = tile(r.x - grow, m.tilesX); tx <= tile(r.z + grow, m.tilesX); ++tx)
+                m.tileDelta[ty * m.tilesX + tx] = std::min(m.tileDelta[ty * m.tilesX + tx], delta);
+    }
 }
 
 void MaskModule::markHidden(Statistics& stats)
@@ -531,7 +609,8 @@ void MaskModule::markHidden(Statistics& stats)
     // A stamp hides while it is later than the walk time; with δ = 0 it still has to hide in the
     // critical frame itself.
     const double now = m.criticalView.time;
-    const double until = std::max(m.validUntil, std::nextafter(now, std::numeric_limits<double>::infinity()));
+    const auto stampFor = [&](double delta)
+    { return std::max(now + delta / _options.maxEyeSpeed, std::nextafter(now, std::numeric_limits<double>::infinity())); };
     const View& view = m.criticalView;
     std::vector<std::uint32_t> stack{m.tree.root()};
     while (!stack.empty())
@@ -545,9 +624,12 @@ void MaskModule::markHidden(Statistics& stats)
         if (view.frustum.classify(node.bounds) == Containment::Outside)
             continue;
         ++stats.nodesTested;
-        if (objectBehindMask(node.bounds, 0))
+        double delta = 0.0;
+        if (objectBehindMask(node.bounds, 0, delta))
         {
+            const double until = stampFor(delta);
             m.tree.markNode(index, until);
+            m.stamps.push_back({until, node.objectCount});
             ++stats.nodesMarked;
             if (m.debug)
                 m.debug->nodes.push_back({node.bounds, NodeState::Invisible, 0});
@@ -574,9 +656,12 @@ void MaskModule::markHidden(Statistics& stats)
             for (ObjectId id : n.objects)
             {
                 const SceneObject& object = _scene->objects[id];
-                if (objectBehindMask(object.bounds, kObjectSplits))
+                double delta = 0.0;
+                if (objectBehindMask(object.bounds, kObjectSplits, delta))
                 {
+                    const double until = stampFor(delta);
                     m.tree.markObject(id, until);
+                    m.stamps.push_back({until, 1u});
                     ++stats.objectsMarked;
                 }
             }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -45,10 +46,14 @@ void clip(FlaggedPolygon& polygon, const Plane& plane, FlaggedPolygon& scratch)
 } // namespace
 
 void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::vector<std::uint32_t>& selected,
-                     const MaskProjection& projection, double nearDepth, double delta, MaskGroups& out)
+                     const MaskProjection& projection, double nearDepth, double shift, MaskGroups& out)
 {
     out.polygons.clear();
     out.groupStart.clear();
+    out.groupDelta.clear();
+    out.groupRect.clear();
+    std::unordered_map<std::uint32_t, double> polygonDelta;
+    polygonDelta.reserve(selected.size() * 2);
     // Facing from every eye of the ball: +1 front, −1 back, 0 unusable.
     std::unordered_map<std::uint32_t, int> facing;
     facing.reserve(selected.size() * 2);
@@ -61,6 +66,12 @@ void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::ve
         const Vec3 p1 = projection.toEye(polygon.vertices.front() + n);
         const Vec3 nEye = p1 - p0;
         const double eyeDistance = -glm::dot(nEye, p0); // signed distance of the eye from the plane
+        // Nothing nearer than the clipping depth is rasterized.
+        double nearest = std::numeric_limits<double>::max();
+        for (const Vec3& v : polygon.vertices)
+            nearest = std::min(nearest, projection.viewDepth(v));
+        const double delta = projection.deltaFor(shift, std::max(nearest, nearDepth));
+        polygonDelta.emplace(index, delta);
         const double margin = delta + 1e-9 * (1.0 + glm::length(p0));
         int side = eyeDistance > margin ? 1 : eyeDistance < -margin ? -1 : 0;
         if (polygon.oneSided && side < 0)
@@ -106,9 +117,13 @@ void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::ve
     for (std::size_t g = 0; g + 1 < starts.size(); ++g)
     {
         out.groupStart.push_back(static_cast<std::uint32_t>(out.polygons.size()));
+        double groupDelta = std::numeric_limits<double>::max();
+        glm::dvec4 rect(std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+                        std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest());
         for (std::uint32_t k = starts[g]; k < starts[g + 1]; ++k)
         {
             const std::uint32_t index = order[k];
+            groupDelta = std::min(groupDelta, polygonDelta[index]);
             const OccluderPolygon& polygon = polygons[index];
             const std::size_t n = polygon.vertices.size();
             work.vertices.resize(n);
@@ -149,12 +164,18 @@ void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::ve
             ScreenPolygon screen;
             screen.vertices.reserve(work.vertices.size());
             for (const Vec3& v : work.vertices)
+            {
                 screen.vertices.push_back(projection.toMask(v));
+                const glm::dvec2& m = screen.vertices.back();
+                rect = glm::dvec4(std::min(rect.x, m.x), std::min(rect.y, m.y), std::max(rect.z, m.x), std::max(rect.w, m.y));
+            }
             screen.depth = projection.depthPlane(normal, d);
             out.polygons.push_back(std::move(screen));
             emitted.insert(index);
             edgeNeighbours.push_back(work.neighbour);
         }
+        out.groupDelta.push_back(groupDelta);
+        out.groupRect.push_back(rect);
     }
     out.groupStart.push_back(static_cast<std::uint32_t>(out.polygons.size()));
     // An edge is inside the group's union only if the polygon across it made it to the mask too

@@ -82,8 +82,9 @@ public:
         std::size_t coveredPixels = 0;
         std::uint32_t maskWidth = 0, maskHeight = 0;
         std::uint32_t nodesTested = 0, nodesMarked = 0, objectsMarked = 0;
-        double delta = 0.0;       // δ of the current mask (world units)
-        double validUntil = 0.0;  // t_c + δ/V
+        double delta = 0.0;         // least δ of the current marks (world units)
+        double validUntil = 0.0;    // t_c + δ/V: every mark holds until then
+        double criticalAfter = 0.0; // when half the hidden objects' stamps have run out
         std::uint32_t culled = 0; // objects this query removed
     };
     Statistics lastStatistics() const;
@@ -91,9 +92,13 @@ public:
     const OcclusionMask& mask() const;
 
 private:
-    // True when the box lies behind the current mask for every eye of the current δ-ball; a box
-    // that is covered but not deep enough is halved up to `splits` times.
-    bool objectBehindMask(const Aabb& box, int splits) const;
+    // True when the box lies behind the current mask (or out of its view) for every eye within
+    // `delta` of the critical eye (set on success); a box that is covered but not deep enough is
+    // halved up to `splits` times.
+    bool objectBehindMask(const Aabb& box, int splits, double& delta) const;
+    // The least δ of the occluder groups whose rectangles reach the given mask rectangle.
+    double tileDeltaOver(double x0, double y0, double x1, double y1) const;
+    void fillTileDeltas(double shift);
     // The critical frame's marking pass over the kd-tree.
     void markHidden(Statistics& stats);
     struct Impl;
