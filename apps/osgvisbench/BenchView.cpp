@@ -21,4 +21,14 @@ std::vector<BenchView> makeBenchViews(const core::Walk& walk)
     }
     return views;
 }
+
+std::vector<core::View> makeCoreViews(const core::Walk& walk)
+{
+    const core::Mat4 projection = walk.projection.matrix(walk.aspect());
+    std::vector<core::View> views;
+    views.reserve(walk.keys.size());
+    for (const core::WalkKey& key : walk.keys)
+        views.push_back(core::makeView(key.viewMatrix(), projection, key.time, walk.width, walk.height));
+    return views;
+}
 } // namespace osgVis::bench

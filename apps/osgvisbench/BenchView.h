@@ -3,6 +3,7 @@
 // with the exact matrices every mode and the oracle use (one fixed projection, one fixed near/far
 // for the whole walk).
 #include <osgVis/core/Frustum.h>
+#include <osgVis/core/View.h>
 #include <osgVis/core/Walk.h>
 
 #include <osg/Matrixd>
@@ -21,4 +22,8 @@ struct BenchView
 
 // One view per key; the walk's width/height give the aspect.
 std::vector<BenchView> makeBenchViews(const core::Walk& walk);
+
+// The same views as the core modules take them (time and viewport included): what the cull-only
+// sweeps feed a module chain, with no OSG matrices in between.
+std::vector<core::View> makeCoreViews(const core::Walk& walk);
 } // namespace osgVis::bench

@@ -1,10 +1,10 @@
 #include "CullSweep.h"
 
+#include "BenchView.h"
 #include "DerivedWalks.h"
 #include "SampleStatistics.h"
 
 #include <osgVis/core/ModuleRegistry.h>
-#include <osgVis/core/View.h>
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -23,16 +23,6 @@ struct ChainRun
     std::vector<core::VisibleSet> answers; // per view
     double visibleSum = 0.0;
 };
-
-std::vector<core::View> coreViews(const core::Walk& walk)
-{
-    const core::Mat4 projection = walk.projection.matrix(walk.aspect());
-    std::vector<core::View> views;
-    views.reserve(walk.keys.size());
-    for (const core::WalkKey& key : walk.keys)
-        views.push_back(core::makeView(key.viewMatrix(), projection, key.time, walk.width, walk.height));
-    return views;
-}
 
 // A fresh chain (no temporal state from another run) over `views` with at most `threads` TBB threads.
 ChainRun runChain(const std::string& chainName, const core::Scene& scene, const std::vector<core::View>& views,
@@ -106,7 +96,7 @@ SweepReport runCullSweeps(const core::Scene& scene, const core::Walk& walk, cons
         for (unsigned speed : speeds)
         {
             const core::Walk paced = pacedWalk(walk, speed);
-            const std::vector<core::View> views = coreViews(settings.cube ? cubeFaceWalk(paced) : paced);
+            const std::vector<core::View> views = makeCoreViews(settings.cube ? cubeFaceWalk(paced) : paced);
             if (views.empty())
                 continue;
             std::vector<core::VisibleSet> firstAnswers;

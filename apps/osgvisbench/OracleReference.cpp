@@ -5,7 +5,6 @@
 #include <osgVis/oracle/IdBufferOracle.h>
 
 #include <iostream>
-#include <type_traits>
 #include <utility>
 
 namespace osgVis::bench
@@ -42,23 +41,12 @@ core::VisibleSet objectsInFrustum(const core::Scene& scene, const core::Frustum&
             inside.set(object.id);
     return inside;
 }
-// note: the oracle gains per-object pixel counts (Result::pixels, parallel to Result::visible) in a
-// change of its own; until then the bench builds without them and reports no mis-drawn pixels.
-template <typename Result, typename = void> struct CountsPixels : std::false_type
+void addPixelCounts(const oracle::IdBufferOracle::Result& result, const std::vector<core::ObjectId>& sceneIdOf,
+                    ViewReference& view)
 {
-};
-template <typename Result>
-struct CountsPixels<Result, std::void_t<decltype(std::declval<const Result&>().pixels)>> : std::true_type
-{
-};
-
-template <typename Result>
-void addPixelCounts(const Result& result, const std::vector<core::ObjectId>& sceneIdOf, ViewReference& view)
-{
-    if constexpr (CountsPixels<Result>::value)
-        for (std::size_t i = 0; i < result.visible.size(); ++i)
-            if (result.pixels[i] != 0)
-                view.pixels.push_back({sceneIdOf.at(result.visible[i]), std::uint32_t(result.pixels[i])});
+    for (std::size_t i = 0; i < result.visible.size(); ++i)
+        if (result.pixels[i] != 0)
+            view.pixels.push_back({sceneIdOf.at(result.visible[i]), std::uint32_t(result.pixels[i])});
 }
 } // namespace
 
@@ -75,7 +63,7 @@ OracleReference computeOracleReference(osg::Node& root, const ExtractedScene& sc
 
     OracleReference reference;
     reference.supersample = supersample;
-    reference.pixelCounts = CountsPixels<oracle::IdBufferOracle::Result>::value;
+    reference.pixelCounts = true;
     reference.views.reserve(views.size());
     Progress progress("oracle", views.size());
     for (std::size_t v = 0; v < views.size(); ++v)
