@@ -92,7 +92,8 @@ std::string benchUsage()
     return "usage: osgvisbench (--scene FILE | --generate office|city|floor|tetra [--triangles N] [--seed S])\n"
            "                   [--walk FILE] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
            "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
-           "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8] [--cull-only]\n"
+           "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8]\n"
+           "                   [--mask-slowdown K] [--cull-only]\n"
            "                   [--dynamic]\n"
            "                   [--json OUT.json] [--help]\n"
            "\n"
@@ -110,7 +111,13 @@ std::string benchUsage()
            "  Delta (frame pixels; the mode's own options otherwise) and report the fraction of\n"
            "  critical frames and their reasons, the median/p99 ms of each step of a critical\n"
            "  frame (select, rasterize, pyramid, mark), the median cull ms of critical and other\n"
-           "  frames, and the drawn fraction.\n"
+           "  frames, and the drawn fraction. The mask stages' top eye speed V (MaskOptions::\n"
+           "  maxEyeSpeed) is set to the observer's measured top speed over the swept frames (an\n"
+           "  application knows its camera's top speed), 1.01 x max |eye step| / time step.\n"
+           "--mask-slowdown K: the Delta sweep's observer walks the same path K times slower\n"
+           "  (default 1): K-1 frames between consecutive views, the eye moved linearly with the\n"
+           "  earlier view's orientation, at the views' own time step, so consecutive frames are\n"
+           "  close and the masks' temporal coherence shows. At most 200000 frames (views x K).\n"
            "--cull-only: run just these sweeps (no oracle, no GL).\n"
            "--dynamic: a dynamic walk (osg and module-chain modes): 12 cars drive along the walk's\n"
            "  streets every frame, 3 buildings are dropped on existing ones at 1/4 and at 1/2 of\n"
@@ -177,6 +184,14 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.threads = parsePositiveList(flag, value(), 256);
         else if (flag == "--mask-deltas")
             options.maskDeltas = parseNonNegativeList(flag, value(), 1000.0);
+        else if (flag == "--mask-slowdown")
+        {
+            const std::uint64_t slowdown = parseUnsigned(flag, value());
+            if (slowdown < 1 || slowdown > MaxMaskSweepFrames)
+                throw UsageError(flag + " must lie between 1 and " + std::to_string(MaxMaskSweepFrames) + ", got '" +
+                                 std::to_string(slowdown) + "'");
+            options.maskSlowdown = unsigned(slowdown);
+        }
         else if (flag == "--cull-only")
             options.cullOnly = true;
         else if (flag == "--dynamic")
@@ -197,6 +212,14 @@ BenchOptions parseBenchOptions(int argc, char** argv)
         throw UsageError("--supersample must lie between 1 and 8");
     if (options.dynamic && (options.cullOnly || options.sweeps() || options.maskSweep()))
         throw UsageError("--dynamic renders a walk against the oracle: no --cull-only, --speeds, --threads or --mask-deltas");
+    if (options.maskSlowdown != 1 && !options.maskSweep())
+        throw UsageError("--mask-slowdown slows the observer of the mask sweep: give --mask-deltas too");
+    // note: without --views the walk's length is known only once loaded; the sweep checks again there.
+    const std::uint64_t sweptViews = std::uint64_t(options.views) * (options.cube ? 6u : 1u);
+    if (sweptViews * options.maskSlowdown > MaxMaskSweepFrames)
+        throw UsageError("--mask-slowdown " + std::to_string(options.maskSlowdown) + " over " +
+                         std::to_string(sweptViews) + " views makes more than " + std::to_string(MaxMaskSweepFrames) +
+                         " frames: give fewer --views or a smaller slowdown");
     if (options.cullOnly && !options.sweeps() && !options.maskSweep())
         throw UsageError("--cull-only needs a sweep: give --speeds, --threads and/or --mask-deltas");
     return options;

@@ -1,6 +1,7 @@
 #pragma once
 // Command line of osgvisbench: what scene, which walk, which modes, at what size, and where the
 // JSON goes. Parsing only: nothing here loads a file or touches GL.
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,10 @@ struct UsageError : std::runtime_error
 {
     using std::runtime_error::runtime_error;
 };
+
+// The most frames the mask sweep's slowed walk may have (views × --mask-slowdown): a bound on its
+// run time and memory.
+constexpr std::size_t MaxMaskSweepFrames = 200000;
 
 struct BenchOptions
 {
@@ -30,6 +35,7 @@ struct BenchOptions
     std::vector<unsigned> speeds;     // --speeds 1,2,4: cull-only sweep over observer speeds
     std::vector<unsigned> threads;    // --threads 1,2: cull-only sweep over TBB thread counts
     std::vector<double> maskDeltas;   // --mask-deltas 0,1,2: cull-only Δ sweep of the mask modes
+    unsigned maskSlowdown = 1;        // --mask-slowdown K: the Δ sweep's observer K times slower
     bool cullOnly = false;            // --cull-only: the sweeps alone, no oracle and no rendering
     bool dynamic = false;             // --dynamic: cars, dropped and deleted buildings during the walk (DynamicWalk)
     bool help = false;                // --help

@@ -1,15 +1,17 @@
 #include "MaskSweep.h"
 
+#include "BenchView.h"
 #include "SampleStatistics.h"
 
 #include <osgVis/core/ModuleRegistry.h>
-#include <osgVis/core/View.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 namespace osgVis::bench
 {
@@ -35,17 +37,6 @@ std::vector<std::string> chainStages(const std::string& chain)
     while (std::getline(in, stage, ','))
         stages.push_back(stage);
     return stages;
-}
-
-// The rendered pass's matrices and viewport, as core views.
-std::vector<core::View> coreViews(const core::Walk& walk)
-{
-    const core::Mat4 projection = walk.projection.matrix(walk.aspect());
-    std::vector<core::View> views;
-    views.reserve(walk.keys.size());
-    for (const core::WalkKey& key : walk.keys)
-        views.push_back(core::makeView(key.viewMatrix(), projection, key.time, walk.width, walk.height));
-    return views;
 }
 
 // Per-frame samples of one (mode, Δ) run.
@@ -95,11 +86,11 @@ double drawnFraction(const core::Scene& scene, const core::VisibleSet& visible)
     return drawn / total;
 }
 
-MaskRun runMaskChain(const std::string& chainName, double delta, const core::Scene& scene,
+MaskRun runMaskChain(const std::string& chainName, double delta, double maxEyeSpeed, const core::Scene& scene,
                      const std::vector<core::View>& views)
 {
     core::MaskModule* mask = nullptr;
-    core::ModuleChain chain = createMaskChain(chainName, delta, mask);
+    core::ModuleChain chain = createMaskChain(chainName, delta, mask, maxEyeSpeed);
     chain.setScene(scene);
     MaskRun run;
     core::VisibleSet visible;
@@ -140,17 +131,70 @@ MaskSweepRow summarize(const std::string& mode, double delta, const MaskRun& run
 }
 } // namespace
 
-std::optional<core::MaskOptions> maskModeOptions(const std::string& moduleName, double shrinkPixels)
+core::Walk slowedWalk(const core::Walk& walk, unsigned slowdown)
+{
+    if (slowdown == 0)
+        throw std::invalid_argument("slowedWalk: the slowdown must be at least 1");
+    const std::size_t keys = walk.keys.size();
+    if (slowdown > 1 && keys != 0 && (keys - 1) * std::size_t(slowdown) + 1 > MaxMaskSweepFrames)
+        throw std::length_error("--mask-slowdown " + std::to_string(slowdown) + " over " + std::to_string(keys) +
+                                " views makes " + std::to_string((keys - 1) * std::size_t(slowdown) + 1) +
+                                " frames, more than " + std::to_string(MaxMaskSweepFrames) +
+                                ": give fewer --views or a smaller slowdown");
+    if (slowdown == 1 || keys < 2)
+        return walk;
+    core::Walk slowed = walk;
+    slowed.keys.clear();
+    slowed.keys.reserve((keys - 1) * slowdown + 1);
+    const double start = walk.keys.front().time;
+    double segmentStart = start;
+    for (std::size_t k = 0; k + 1 < keys; ++k)
+    {
+        const core::WalkKey& from = walk.keys[k];
+        const core::WalkKey& to = walk.keys[k + 1];
+        const double interval = to.time - from.time;
+        for (unsigned f = 0; f < slowdown; ++f)
+        {
+            const double along = double(f) / double(slowdown);
+            core::WalkKey frame = from;
+            frame.eye = from.eye + along * (to.eye - from.eye);
+            frame.center = frame.eye + (from.center - from.eye);
+            frame.time = segmentStart + double(f) * interval;
+            slowed.keys.push_back(frame);
+        }
+        segmentStart += double(slowdown) * interval;
+    }
+    slowed.keys.push_back(walk.keys.back());
+    slowed.keys.back().time = segmentStart;
+    return slowed;
+}
+
+double observedMaxEyeSpeed(const core::Walk& walk)
+{
+    double fastest = 0.0;
+    for (std::size_t k = 0; k + 1 < walk.keys.size(); ++k)
+    {
+        const double interval = walk.keys[k + 1].time - walk.keys[k].time;
+        if (interval > 0.0)
+            fastest = std::max(fastest, glm::length(walk.keys[k + 1].eye - walk.keys[k].eye) / interval);
+    }
+    return std::max(1.01 * fastest, 1e-6);
+}
+
+std::optional<core::MaskOptions> maskModeOptions(const std::string& moduleName, double shrinkPixels,
+                                                 std::optional<double> maxEyeSpeed)
 {
     if (!core::hasModule(moduleName))
         return std::nullopt;
-    // The registry is the one authority on a mode's options; only Δ changes here.
+    // The registry is the one authority on a mode's options; only Δ (and V) change here.
     const std::unique_ptr<core::VisibilityModule> module = core::createModule(moduleName);
     const auto* mask = dynamic_cast<const core::MaskModule*>(module.get());
     if (!mask)
         return std::nullopt;
     core::MaskOptions options = mask->options();
     options.shrinkPixels = shrinkPixels;
+    if (maxEyeSpeed)
+        options.maxEyeSpeed = *maxEyeSpeed;
     return options;
 }
 
@@ -162,13 +206,14 @@ bool hasMaskStage(const std::string& chain)
     return false;
 }
 
-core::ModuleChain createMaskChain(const std::string& chain, double shrinkPixels, core::MaskModule*& maskStage)
+core::ModuleChain createMaskChain(const std::string& chain, double shrinkPixels, core::MaskModule*& maskStage,
+                                  std::optional<double> maxEyeSpeed)
 {
     core::ModuleChain modules;
     maskStage = nullptr;
     for (const std::string& stage : chainStages(chain))
     {
-        if (const std::optional<core::MaskOptions> options = maskModeOptions(stage, shrinkPixels))
+        if (const std::optional<core::MaskOptions> options = maskModeOptions(stage, shrinkPixels, maxEyeSpeed))
         {
             auto mask = std::make_unique<core::MaskModule>(*options);
             maskStage = mask.get();
@@ -181,21 +226,27 @@ core::ModuleChain createMaskChain(const std::string& chain, double shrinkPixels,
 }
 
 std::vector<MaskSweepRow> runMaskSweep(const core::Scene& scene, const core::Walk& walk,
-                                       const std::vector<BenchMode>& modes, const std::vector<double>& deltas)
+                                       const std::vector<BenchMode>& modes, const std::vector<double>& deltas,
+                                       unsigned slowdown)
 {
-    const std::vector<core::View> views = coreViews(walk);
+    const core::Walk frames = slowedWalk(walk, slowdown);
+    const std::vector<core::View> views = makeCoreViews(frames);
     std::vector<MaskSweepRow> rows;
     if (views.empty())
         return rows;
+    const double maxEyeSpeed = observedMaxEyeSpeed(frames);
+    std::cerr << "mask sweep: observer " << slowdown << "x slower, " << views.size() << " frames from "
+              << walk.keys.size() << " views, V = " << maxEyeSpeed << " units/s (measured over the frames)"
+              << std::endl;
     for (const BenchMode& mode : modes)
     {
         if (mode.kind != BenchMode::Kind::ModuleChain || !hasMaskStage(mode.chain))
             continue;
         for (double delta : deltas)
         {
-            std::cerr << "mask sweep " << mode.name << ": delta " << delta << " px, " << views.size() << " views"
+            std::cerr << "mask sweep " << mode.name << ": delta " << delta << " px, " << views.size() << " frames"
                       << std::endl;
-            rows.push_back(summarize(mode.name, delta, runMaskChain(mode.chain, delta, scene, views)));
+            rows.push_back(summarize(mode.name, delta, runMaskChain(mode.chain, delta, maxEyeSpeed, scene, views)));
         }
     }
     return rows;
