@@ -725,6 +725,29 @@ TEST(MaskModule, OffCentreProjection)
     checkViews("off-centre", city.scene, streetWalk(160, 120, offCentre, 8));
 }
 
+// A turn must forget the marks even when stamps ran out at the same moment: marks judged objects
+// by their part inside the critical frame, and nodes outside the frustum were stamped as out of
+// view for the critical orientation only. (Expiry used to be checked first and kept them.)
+TEST(MaskModule, TurnAtStampExpiryForgetsTheMarks)
+{
+    const City city = makeCity();
+    const Vec3 eye(85.0, -8.0, 1.7);
+    for (const std::string mode : {"mask", "mask-distance"})
+        for (const Vec3& direction : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(1, 1, 0), Vec3(0, -1, 0)})
+        {
+            const std::unique_ptr<VisibilityModule> module = makeMode(mode);
+            module->setScene(city.scene);
+            cullAndCheck(mode + " before the turn", *module, city.scene,
+                         lookFrom(eye, {0, 1, 0}, 0.0, 160, 120, perspective(4.0 / 3.0)));
+            const MaskModule::Statistics first = asMask(*module).lastStatistics();
+            ASSERT_GT(first.criticalAfter, 0.0) << describe(city.scene, lookAlongY(eye, 0.0), first);
+            const View turned = lookFrom(eye, direction, first.criticalAfter, 160, 120, perspective(4.0 / 3.0));
+            cullAndCheck(mode + " after the turn", *module, city.scene, turned);
+            EXPECT_EQ(asMask(*module).lastStatistics().critical, MaskModule::CriticalReason::Turned)
+                << describe(city.scene, turned, asMask(*module).lastStatistics());
+        }
+}
+
 TEST(MaskModule, ViewportChangeBetweenFrames)
 {
     const City city = makeCity();

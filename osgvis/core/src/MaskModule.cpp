@@ -25,6 +25,19 @@ double millisecondsSince(Clock::time_point start)
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+// True when the box lies more than `margin` outside one of the frustum's planes (unit normals).
+bool outsideGrownFrustum(const Frustum& frustum, const Aabb& box, double margin)
+{
+    for (const Plane& plane : frustum.planes())
+    {
+        const Vec3 farthest(plane.normal.x >= 0.0 ? box.max.x : box.min.x, plane.normal.y >= 0.0 ? box.max.y : box.min.y,
+                            plane.normal.z >= 0.0 ? box.max.z : box.min.z);
+        if (plane.distance(farthest) < -margin * (1.0 + 1e-9) - 1e-12)
+            return true;
+    }
+    return false;
+}
+
 bool sameOrientation(const View& a, const View& b)
 {
     for (int c = 0; c < 3; ++c)
@@ -349,15 +362,16 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
             m.forgetMarks();
             reason = CriticalReason::ViewChanged;
         }
-        else if (t >= m.criticalAfter)
-            reason = CriticalReason::StampExpired;
         else if (!sameOrientation(view, m.criticalView))
         {
             // Marks cover the critical frame (grown by Δ) only: objects partly outside it were
-            // judged by their part inside.
+            // judged by their part inside. Checked before expiry: a turn must forget the marks
+            // whatever else is due.
             m.forgetMarks();
             reason = CriticalReason::Turned;
         }
+        else if (t >= m.criticalAfter)
+            reason = CriticalReason::StampExpired;
     }
     m.occluderGone = false;
 
@@ -611,6 +625,9 @@ void MaskModule::markHidden(Statistics& stats)
     const double now = m.criticalView.time;
     const auto stampFor = [&](double delta)
     { return std::max(now + delta / _options.maxEyeSpeed, std::nextafter(now, std::numeric_limits<double>::infinity())); };
+    double outOfViewDelta = 0.0;
+    for (double delta : m.groups.groupDelta)
+        outOfViewDelta = std::max(outOfViewDelta, delta);
     const View& view = m.criticalView;
     std::vector<std::uint32_t> stack{m.tree.root()};
     while (!stack.empty())
@@ -620,9 +637,19 @@ void MaskModule::markHidden(Statistics& stats)
         const MaskKdTree::Node& node = m.tree.node(index);
         if (node.objectCount == 0 || node.bounds.empty())
             continue;
-        // Outside the view: nothing was rasterized there; frustum culling is another stage's job.
+        // Out of view for every eye within outOfViewDelta (the frustum's planes move with the eye,
+        // its orientation kept): hidden without a look at the mask. Such marks do not decide when
+        // the next critical frame comes (weight 0).
         if (view.frustum.classify(node.bounds) == Containment::Outside)
+        {
+            if (outsideGrownFrustum(view.frustum, node.bounds, outOfViewDelta))
+            {
+                const double until = stampFor(outOfViewDelta);
+                m.tree.markNode(index, until);
+                m.stamps.push_back({until, 0u});
+            }
             continue;
+        }
         ++stats.nodesTested;
         double delta = 0.0;
         if (objectBehindMask(node.bounds, 0, delta))
