@@ -104,6 +104,8 @@ struct MaskSweepRow
     std::size_t views = 0;
     std::size_t criticalFrames = 0;
     std::optional<double> criticalFraction;
+    unsigned slowdown = 1;    // the observer K times slower than the rendered pass's views (--mask-slowdown)
+    double maxEyeSpeed = 0.0; // V given to the mask stages: the frames' measured top eye speed, units/s
     StepTiming select, rasterize, pyramid, mark; // over the critical frames
     std::optional<double> cullMsCriticalMedian;  // whole chain, critical frames
     std::optional<double> cullMsNonCriticalMedian;

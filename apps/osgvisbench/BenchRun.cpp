@@ -124,7 +124,7 @@ BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& 
     if (options.maskSweep())
     {
         // The rendered pass's views, so drawn fractions compare with the main table's.
-        report.maskSweep = runMaskSweep(withTriangles->scene, walk, modes, options.maskDeltas);
+        report.maskSweep = runMaskSweep(withTriangles->scene, walk, modes, options.maskDeltas, options.maskSlowdown);
         if (report.maskSweep.empty())
             std::cerr << "osgvisbench: warning: --mask-deltas: no mode has a mask stage (mask, mask-approx, "
                          "mask-distance)"

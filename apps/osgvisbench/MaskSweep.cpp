@@ -106,11 +106,14 @@ MaskRun runMaskChain(const std::string& chainName, double delta, double maxEyeSp
     return run;
 }
 
-MaskSweepRow summarize(const std::string& mode, double delta, const MaskRun& run)
+MaskSweepRow summarize(const std::string& mode, double delta, unsigned slowdown, double maxEyeSpeed,
+                       const MaskRun& run)
 {
     MaskSweepRow row;
     row.mode = mode;
     row.delta = delta;
+    row.slowdown = slowdown;
+    row.maxEyeSpeed = maxEyeSpeed;
     row.views = run.views;
     row.criticalFrames = run.criticalCullMs.size();
     if (run.views != 0)
@@ -246,7 +249,7 @@ std::vector<MaskSweepRow> runMaskSweep(const core::Scene& scene, const core::Wal
         {
             std::cerr << "mask sweep " << mode.name << ": delta " << delta << " px, " << views.size() << " frames"
                       << std::endl;
-            rows.push_back(summarize(mode.name, delta, runMaskChain(mode.chain, delta, maxEyeSpeed, scene, views)));
+            rows.push_back(summarize(mode.name, delta, slowdown, maxEyeSpeed, runMaskChain(mode.chain, delta, maxEyeSpeed, scene, views)));
         }
     }
     return rows;

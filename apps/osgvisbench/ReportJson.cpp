@@ -112,7 +112,8 @@ void writeMaskSweepRow(std::ostream& out, const MaskSweepRow& row)
 {
     out << "    {\"mode\": " << jsonString(row.mode) << ", \"delta\": " << jsonNumber(row.delta)
         << ", \"views\": " << row.views << ", \"critical_frames\": " << row.criticalFrames
-        << ", \"critical_fraction\": " << jsonNumber(row.criticalFraction);
+        << ", \"critical_fraction\": " << jsonNumber(row.criticalFraction) << ", \"slowdown\": " << row.slowdown
+        << ", \"max_eye_speed\": " << jsonNumber(row.maxEyeSpeed);
     const std::pair<const char*, const StepTiming*> steps[] = {
         {"select", &row.select}, {"rasterize", &row.rasterize}, {"pyramid", &row.pyramid}, {"mark", &row.mark}};
     for (const auto& [name, step] : steps)

@@ -120,7 +120,10 @@ std::string reasonsCell(const MaskSweepRow& row)
 
 void writeMaskSweepTable(std::ostream& out, const std::vector<MaskSweepRow>& rows)
 {
-    out << "\nmask sweep over the image-space shrinkage Delta (cull only; step ms med/p99 over critical frames):\n";
+    // Every row has the same observer: the sweep's one slowed walk.
+    out << "\nmask sweep over the image-space shrinkage Delta (cull only; observer " << rows.front().slowdown
+        << "x slower, V " << formatted(rows.front().maxEyeSpeed, "%.4g") << " units/s; step ms med/p99 over critical "
+        << "frames):\n";
     const std::size_t nameWidth = nameColumnWidth(rows, [](const MaskSweepRow& row) { return row.mode; });
     out << leftCell("mode", nameWidth) << cell("Delta", 7) << cell("views", 7) << cell("crit%", 7) << cell("select", 13)
         << cell("rasterize", 13) << cell("pyramid", 13) << cell("mark", 13) << cell("cull crit", 10)

@@ -22,6 +22,10 @@ constexpr double Views = 12;
 const std::vector<std::string> Reasons = {"first",  "stamp-expired", "left-region",
                                           "turned", "occluder-gone", "view-changed"};
 constexpr std::size_t HistogramBins = 7; // 0, 1-4, 5-16, 17-64, 65-256, 257-1024, >1024 pixels
+// The tiny city's whole walk (1000 keys, 1 unit apart, 0.1 s) 20 times slower: 0.05 units a frame,
+// about the median δ of a 4-pixel mask on this city (0.06), as at the paper's interactive frame rates.
+const char* const SlowTinyCity = "--generate city --triangles 5000 --seed 1 --size 160x128 --mask-slowdown 20";
+constexpr double WalkKeys = 1000, Slowdown = 20;
 
 AppRun runBench(const std::string& arguments)
 {
@@ -165,6 +169,41 @@ TEST(MaskBench, BadDeltaListsAreUsageErrors)
     }
 }
 
+TEST(MaskBench, SlowObserverHasNonCriticalFramesAndItsOwnTopSpeed)
+{
+    const std::filesystem::path slowJson = scratchJson().replace_filename("slow.json");
+    const AppRun slow = runBench(std::string(SlowTinyCity) + " --modes frustum+mask --mask-deltas 1,4 --cull-only --json '" +
+                                 slowJson.string() + "'");
+    ASSERT_EQ(slow.exitCode, 0) << slow.output;
+    EXPECT_NE(slow.output.find("observer 20x slower"), std::string::npos) << slow.output;
+    const std::vector<std::string> rows = maskSweepRows(readText(slowJson));
+    ASSERT_EQ(rows.size(), 2u) << readText(slowJson);
+    for (const std::string& row : rows)
+    {
+        EXPECT_EQ(numberField(row, "slowdown"), Slowdown) << row;
+        EXPECT_EQ(numberField(row, "views"), (WalkKeys - 1) * Slowdown + 1) << "K - 1 frames between keys: " << row;
+    }
+    const double criticalAt1 = numberField(rows[0], "critical_fraction").value_or(-1);
+    const double criticalAt4 = numberField(rows[1], "critical_fraction").value_or(-1);
+    EXPECT_LT(criticalAt4, 1.0) << "masks last over several frames: " << rows[1];
+    EXPECT_LE(criticalAt4, criticalAt1) << rows[0] << "\n" << rows[1];
+    EXPECT_GT(numberField(rows[0], "cull_ms_noncritical_median").value_or(-1), 0.0) << rows[0];
+
+    // V is measured over the frames: the same walk at full speed has exactly K times the top speed.
+    const std::filesystem::path fullJson = scratchJson().replace_filename("full.json");
+    const AppRun full = runBench(std::string(TinyCity) + " --views 0 --modes frustum+mask --mask-deltas 4 --cull-only "
+                                                         "--json '" + fullJson.string() + "'");
+    ASSERT_EQ(full.exitCode, 0) << full.output;
+    const std::vector<std::string> fullRows = maskSweepRows(readText(fullJson));
+    ASSERT_EQ(fullRows.size(), 1u) << readText(fullJson);
+    EXPECT_EQ(numberField(fullRows[0], "slowdown"), 1.0) << fullRows[0];
+    EXPECT_EQ(numberField(fullRows[0], "views"), WalkKeys) << fullRows[0];
+    const double fullSpeed = numberField(fullRows[0], "max_eye_speed").value_or(-1);
+    EXPECT_GT(fullSpeed, 0.0) << fullRows[0];
+    EXPECT_NEAR(numberField(rows[0], "max_eye_speed").value_or(-1) * Slowdown, fullSpeed, 1e-9 * fullSpeed)
+        << rows[0] << "\n" << fullRows[0];
+}
+
 TEST(MaskBench, BadSlowdownsAreUsageErrors)
 {
     const std::vector<std::pair<std::string, std::string>> cases = {
@@ -183,6 +222,17 @@ TEST(MaskBench, BadSlowdownsAreUsageErrors)
         EXPECT_EQ(run.exitCode, 2) << arguments << ": " << run.output;
         EXPECT_NE(run.output.find(message), std::string::npos) << arguments << ": " << run.output;
     }
+}
+
+// Without --views the walk's length is known only once loaded: the sweep refuses there.
+TEST(MaskBench, SlowdownPastTheFrameCapOfTheWholeWalkFails)
+{
+    const AppRun run = runBench(std::string(TinyCity) + " --views 0 --modes frustum+mask --mask-deltas 1 "
+                                                        "--mask-slowdown 201 --cull-only");
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find("--mask-slowdown 201 over 1000 views makes 200800 frames, more than 200000"),
+              std::string::npos)
+        << run.output;
 }
 
 TEST(MaskBench, MisdrawnPixelsZeroForConservativeModesAndHistogramCoversEveryView)
