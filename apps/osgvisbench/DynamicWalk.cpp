@@ -1,5 +1,7 @@
 #include "DynamicWalk.h"
 
+#include <osgVis/gen/BoxGeometry.h>
+
 #include <osg/Geometry>
 
 #include <algorithm>
@@ -15,24 +17,6 @@ constexpr double carSpacingSeconds = 2.0; // cars drive this far apart along the
 constexpr double carLateral = 2.5;        // metres right of the walk line
 constexpr std::size_t buildingsPerWave = 3;
 
-// A closed box of 12 triangles, counter-clockwise seen from outside.
-osg::ref_ptr<osg::Geometry> boxGeometry(const osg::Vec3& lo, const osg::Vec3& hi, const osg::Vec4& colour,
-                                        const std::string& name)
-{
-    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
-    for (int i = 0; i < 8; ++i)
-        v->push_back(osg::Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z()));
-    static const GLushort faces[] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
-                                     2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
-    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
-    g->setName(name);
-    g->setVertexArray(v);
-    osg::ref_ptr<osg::Vec4Array> c = new osg::Vec4Array;
-    c->push_back(colour);
-    g->setColorArray(c, osg::Array::BIND_OVERALL);
-    g->addPrimitiveSet(new osg::DrawElementsUShort(GL_TRIANGLES, 36, faces));
-    return g;
-}
 
 // The walk key at time t (the last key not after t), wrapping around the walk's duration.
 const core::WalkKey& keyAt(const std::vector<core::WalkKey>& keys, double t)
@@ -60,7 +44,7 @@ DynamicWalk::DynamicWalk(osg::Group& root, const ExtractedScene& model, const co
         car->setName("car");
         car->setDataVariance(osg::Object::DYNAMIC); // the extraction flags its box OBJECT_DYNAMIC
         osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-        geode->addDrawable(boxGeometry({-2.f, -1.f, 0.f}, {2.f, 1.f, 1.5f}, {0.8f, 0.1f, 0.1f, 1.f}, "car"));
+        geode->addDrawable(gen::boxGeometry({-2.f, -1.f, 0.f}, {2.f, 1.f, 1.5f}, {0.8f, 0.1f, 0.1f, 1.f}, "car"));
         car->addChild(geode);
         _traffic->addChild(car);
         _cars.push_back(car);
@@ -93,7 +77,7 @@ void DynamicWalk::planBuildings(const ExtractedScene& model, std::uint32_t seed)
             const core::Vec3 c = base.center(), e = base.extent() * 0.25;
             const float top = float(base.max.z);
             osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-            geode->addDrawable(boxGeometry(osg::Vec3(float(c.x - e.x), float(c.y - e.y), top),
+            geode->addDrawable(gen::boxGeometry(osg::Vec3(float(c.x - e.x), float(c.y - e.y), top),
                                            osg::Vec3(float(c.x + e.x), float(c.y + e.y), top + float(height(rng))),
                                            {0.3f, 0.5f, 0.9f, 1.f}, "dropped building"));
             wave.push_back(geode);

@@ -1,5 +1,7 @@
 #include "BuildingTool.h"
 
+#include <osgVis/gen/BoxGeometry.h>
+
 #include <osg/Geode>
 #include <osg/Geometry>
 
@@ -12,23 +14,6 @@ namespace
 {
 constexpr double footprint = 6.0, height = 10.0;
 
-// A closed box of 12 triangles, counter-clockwise seen from outside.
-osg::ref_ptr<osg::Geometry> boxGeometry(const osg::Vec3& lo, const osg::Vec3& hi)
-{
-    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
-    for (int i = 0; i < 8; ++i)
-        v->push_back(osg::Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z()));
-    static const GLushort faces[] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
-                                     2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
-    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
-    g->setName("dropped building");
-    g->setVertexArray(v);
-    osg::ref_ptr<osg::Vec4Array> c = new osg::Vec4Array;
-    c->push_back(osg::Vec4(0.3f, 0.5f, 0.9f, 1.f));
-    g->setColorArray(c, osg::Array::BIND_OVERALL);
-    g->addPrimitiveSet(new osg::DrawElementsUShort(GL_TRIANGLES, 36, faces));
-    return g;
-}
 
 bool namedBuilding(const std::string& name)
 {
@@ -84,7 +69,7 @@ osg::Node* BuildingTool::dropAhead(const osg::Matrixd& view, double ahead)
                        float(_groundZ + height));
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     geode->setName("dropped building");
-    geode->addDrawable(boxGeometry(lo, hi));
+    geode->addDrawable(gen::boxGeometry(lo, hi, osg::Vec4(0.3f, 0.5f, 0.9f, 1.f), "dropped building"));
     _dropped->addChild(geode);
     if (_onChange)
         _onChange();

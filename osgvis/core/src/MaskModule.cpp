@@ -669,30 +669,16 @@ void MaskModule::markHidden(Statistics& stats)
             continue;
         }
         // Below ρ objects: test them one by one.
-        std::vector<std::uint32_t> below{index};
-        while (!below.empty())
-        {
-            const MaskKdTree::Node& n = m.tree.node(below.back());
-            below.pop_back();
-            if (!n.leaf())
-            {
-                below.push_back(n.left);
-                below.push_back(n.right);
-                continue;
-            }
-            for (ObjectId id : n.objects)
-            {
-                const SceneObject& object = _scene->objects[id];
-                double delta = 0.0;
-                if (objectBehindMask(object.bounds, kObjectSplits, delta))
-                {
-                    const double until = stampFor(delta);
-                    m.tree.markObject(id, until);
-                    m.stamps.push_back({until, 1u});
-                    ++stats.objectsMarked;
-                }
-            }
-        }
+        m.tree.forEachObjectBelow(index, [&](ObjectId id)
+                                  {
+                                      double delta = 0.0;
+                                      if (!objectBehindMask(_scene->objects[id].bounds, kObjectSplits, delta))
+                                          return;
+                                      const double until = stampFor(delta);
+                                      m.tree.markObject(id, until);
+                                      m.stamps.push_back({until, 1u});
+                                      ++stats.objectsMarked;
+                                  });
         if (m.debug)
             m.debug->nodes.push_back({node.bounds, NodeState::Visible, 0});
     }

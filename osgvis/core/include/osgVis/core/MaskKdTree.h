@@ -73,6 +73,21 @@ public:
     bool contains(ObjectId id) const { return leafOf(id) != None; }
 
     // insert of an id already in the tree moves it; empty or non-finite bounds leave it out.
+    // Calls visit(id) for every object in the subtree of `node`.
+    template <class Visit>
+    void forEachObjectBelow(std::uint32_t node, Visit&& visit) const
+    {
+        const Node& n = _nodes[node];
+        if (!n.leaf())
+        {
+            forEachObjectBelow(n.left, visit);
+            forEachObjectBelow(n.right, visit);
+            return;
+        }
+        for (ObjectId id : n.objects)
+            visit(id);
+    }
+
     void insert(ObjectId id, const Aabb& bounds);
     void remove(ObjectId id);
     void move(ObjectId id, const Aabb& bounds);
