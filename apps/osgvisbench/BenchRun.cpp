@@ -18,9 +18,7 @@
 
 namespace osgVis::bench
 {
-namespace
-{
-viewer::ViewerScene loadScene(const BenchOptions& options)
+viewer::ViewerScene loadBenchScene(const BenchOptions& options)
 {
     viewer::ViewerOptions source;
     source.scenePath = options.sceneFile;
@@ -33,6 +31,8 @@ viewer::ViewerScene loadScene(const BenchOptions& options)
     return viewer::loadViewerScene(source);
 }
 
+namespace
+{
 bool runsMode(const std::vector<BenchMode>& modes, BenchMode::Kind kind)
 {
     for (const BenchMode& mode : modes)
@@ -85,7 +85,7 @@ void renderModes(BenchReport& report, const viewer::ViewerScene& scene, const co
 
 BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& modes)
 {
-    const viewer::ViewerScene scene = loadScene(options);
+    const viewer::ViewerScene scene = loadBenchScene(options);
     core::Walk walk = subsampledWalk(scene.walk, options.views);
     if (options.cube)
         walk = cubeFaceWalk(walk);

@@ -1,6 +1,7 @@
 #include "DynamicBench.h"
 
 #include "../osgvisviewer/SceneSource.h"
+#include "BenchRun.h"
 #include "BenchViewer.h"
 #include "DerivedWalks.h"
 #include "DynamicWalk.h"
@@ -21,19 +22,6 @@ namespace osgVis::bench
 {
 namespace
 {
-viewer::ViewerScene loadScene(const BenchOptions& options)
-{
-    viewer::ViewerOptions source;
-    source.scenePath = options.sceneFile;
-    source.generateKind = options.generateKind;
-    source.triangles = options.triangles;
-    source.seed = options.seed;
-    source.walkPath = options.walkFile;
-    source.width = options.width;
-    source.height = options.height;
-    return viewer::loadViewerScene(source);
-}
-
 // The graph's VisibilityGroups, which must re-extract after each change.
 std::vector<VisibilityGroup*> visibilityGroupsIn(osg::Node& graph)
 {
@@ -143,7 +131,7 @@ BenchReport runDynamicBench(const BenchOptions& options, const std::vector<Bench
         if (mode.kind == BenchMode::Kind::OcclusionQueries || mode.kind == BenchMode::Kind::Exact)
             throw std::invalid_argument("--dynamic runs osg and module-chain modes only, not '" + mode.name + "'");
 
-    const viewer::ViewerScene scene = loadScene(options);
+    const viewer::ViewerScene scene = loadBenchScene(options);
     core::Walk walk = subsampledWalk(scene.walk, options.views);
     if (options.cube)
         walk = cubeFaceWalk(walk);
