@@ -984,3 +984,59 @@ TEST(BoxOcclusionRandom, FusedPairsAgreeWithRayCasting)
     EXPECT_GT(fusedOnly, 100);
     EXPECT_GT(fusedFalse, 1000);
 }
+
+// ---------------------------------------------------------------------------------------------
+// A volume of eyes (regions of viewpoints): a decision for the box of eyes holds for each of its
+// eyes, and the volume decides exactly like a point when it shrinks to one.
+
+TEST(EyeVolume, HiddenForTheVolumeIsHiddenForEveryEyeInIt)
+{
+    std::mt19937 random(4242);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), size(0.0, 1.5);
+    const OccluderPolygon polygon = wall();
+    int hidden = 0, visible = 0, partial = 0;
+    for (int trial = 0; trial < 4000; ++trial)
+    {
+        const Vec3 lo(3 * unit(random), 3 * unit(random), -6 + 2 * unit(random));
+        const Aabb box(lo, lo + Vec3(0.2 + size(random), 0.2 + size(random), 0.2 + size(random)));
+        const EyeVolume eyes{Vec3(4 * unit(random), 4 * unit(random), 4 + 3 * unit(random)),
+                             Vec3(size(random), size(random), size(random))};
+        BoxOccluderPlanes planes;
+        computePlanes(polygon, box, planes);
+        const Occlusion forVolume = classify(polygon, planes, eyes, Margin);
+        EXPECT_EQ(classify(polygon, planes, EyeVolume{eyes.center, Vec3(0.0)}, Margin),
+                  classify(polygon, planes, eyes.center, Margin));
+        (forVolume == Occlusion::Invisible ? hidden : forVolume == Occlusion::Visible ? visible : partial)++;
+        if (forVolume != Occlusion::Invisible)
+            continue;
+        for (int k = 0; k < 16; ++k)
+        {
+            // Corners first, then random points of the volume.
+            const Vec3 pick = k < 8 ? Vec3((k & 1) ? 1.0 : -1.0, (k & 2) ? 1.0 : -1.0, (k & 4) ? 1.0 : -1.0)
+                                    : Vec3(unit(random), unit(random), unit(random));
+            const Vec3 eye = eyes.center + pick * eyes.halfExtent;
+            ASSERT_EQ(classify(polygon, planes, eye, Margin), Occlusion::Invisible) << "trial " << trial << " eye " << k;
+            for (int c = 0; c < 8; ++c)
+                ASSERT_TRUE(segmentCrossesPolygon(polygon.vertices, false, eye, box.corner(c)));
+        }
+    }
+    // Every outcome occurs, so the check above is not vacuous.
+    EXPECT_GT(hidden, 100);
+    EXPECT_GT(visible, 100);
+    EXPECT_GT(partial, 100);
+}
+
+TEST(EyeVolume, FusedOccludersHideFromEveryEyeOnlyWhenTheVolumeClearsTheSilhouette)
+{
+    const std::vector<OccluderPolygon> polygons = splitSquare();
+    const std::vector<std::uint32_t> active{0, 1};
+    const Aabb box(Vec3(-1.9, -1.9, -3), Vec3(1.9, 1.9, -2)); // behind the seam of the square
+    std::vector<BoxOccluderPlanes> planes(2);
+    computePlanes(polygons[0], box, planes[0]);
+    computePlanes(polygons[1], box, planes[1]);
+    EXPECT_TRUE(fusedInvisible(polygons, active, planes, EyeVolume{Vec3(0, 0, 5), Vec3(0.1)}, Margin));
+    // Eyes far to the side see past the square's edge.
+    EXPECT_FALSE(fusedInvisible(polygons, active, planes, EyeVolume{Vec3(0, 0, 5), Vec3(4, 0.1, 0.1)}, Margin));
+    // A volume reaching through the plane is on both sides of it.
+    EXPECT_FALSE(fusedInvisible(polygons, active, planes, EyeVolume{Vec3(0, 0, 1), Vec3(0.1, 0.1, 2)}, Margin));
+}

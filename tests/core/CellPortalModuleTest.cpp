@@ -3,6 +3,8 @@
 #include <osgVis/core/CellPortalModule.h>
 #include <osgVis/core/ModuleRegistry.h>
 
+#include "BoxScenes.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -10,23 +12,7 @@
 namespace
 {
 using namespace osgVis::core;
-
-// Axis-aligned box object with its 12 triangles, counter-clockwise seen from outside.
-ObjectId addBox(Scene& scene, const Vec3& lo, const Vec3& hi, const std::string& name)
-{
-    const auto first = static_cast<std::uint32_t>(scene.triangles.size());
-    const Aabb box(lo, hi);
-    const int faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-    for (const auto& f : faces)
-    {
-        const Vec3f a(box.corner(f[0])), b(box.corner(f[1])), c(box.corner(f[2])), d(box.corner(f[3]));
-        scene.triangles.push_back({a, b, c});
-        scene.triangles.push_back({a, c, d});
-    }
-    const ObjectId id = scene.addObject(box, 12, OBJECT_NONE, name);
-    scene.objects[id].firstTriangle = first;
-    return id;
-}
+using osgVis::test::addBox;
 
 // Rooms 4 m wide (x) in a row along x, walls 0.2 m thick and 3 m tall, floor and ceiling slabs; a
 // door 1 m wide, 2 m tall in each inner wall at y in [doorY, doorY+1]. A crate in each room.

@@ -296,13 +296,14 @@ void computePlanes(const OccluderPolygon& polygon, const Aabb& box, BoxOccluderP
     out.boxSide = boxSide;
 }
 
-Occlusion classify(const OccluderPolygon& polygon, const BoxOccluderPlanes& planes, const Vec3& eye, double margin)
+Occlusion classify(const OccluderPolygon& polygon, const BoxOccluderPlanes& planes, const EyeVolume& eyes,
+                   double margin)
 {
     if (!(margin >= 0.0))
         margin = 0.0;
-    const double eyeDistance = polygon.plane.distance(eye);
-    // Edge-on, or no finite eye: no decision can be trusted.
-    if (!(std::abs(eyeDistance) > margin) || !std::isfinite(eyeDistance))
+    const double eyeDistance = polygon.plane.distance(eyes.center);
+    // Edge-on (some eye on or near the plane), or no finite eye: no decision can be trusted.
+    if (!(std::abs(eyeDistance) > margin + eyes.spread(polygon.plane.normal)) || !std::isfinite(eyeDistance))
         return Occlusion::Visible;
     if (polygon.oneSided && eyeDistance < 0.0)
         return Occlusion::Visible;
@@ -312,7 +313,7 @@ Occlusion classify(const OccluderPolygon& polygon, const BoxOccluderPlanes& plan
     {
         for (std::size_t i = 0; i < separatingCount; ++i)
         {
-            if (planes.hasSeparating[i] && planes.separating[i].distance(eye) < -margin)
+            if (planes.hasSeparating[i] && eyes.maxDistance(planes.separating[i]) < -margin)
                 return true;
         }
         return false;
@@ -321,11 +322,11 @@ Occlusion classify(const OccluderPolygon& polygon, const BoxOccluderPlanes& plan
     if (planes.boxSide == 0)
         return separatedByAPlane() ? Occlusion::Visible : Occlusion::Partial;
     if ((planes.boxSide > 0) == (eyeDistance > 0.0))
-        return Occlusion::Visible; // the box is on the eye's side of the polygon
+        return Occlusion::Visible; // the box is on the eyes' side of the polygon
 
     bool hidden = planes.supporting.size() == polygon.vertices.size() && !planes.supporting.empty();
     for (std::size_t i = 0; hidden && i < planes.supporting.size(); ++i)
-        hidden = planes.supporting[i].distance(eye) > margin;
+        hidden = eyes.minDistance(planes.supporting[i]) > margin;
     if (hidden)
         return Occlusion::Invisible;
     return separatedByAPlane() ? Occlusion::Visible : Occlusion::Partial;
@@ -348,8 +349,11 @@ Occlusion classifyBox(const OccluderPolygon& polygon, const Aabb& box, const Vec
 // signed coverage at d is therefore >= 1, so some polygon covers d, and it lies before the box
 // because the box is behind every plane. This needs at least one tested edge.
 bool fusedInvisible(const std::vector<OccluderPolygon>& polygons, const std::vector<std::uint32_t>& active,
-                    const std::vector<BoxOccluderPlanes>& planes, const Vec3& eye, double margin)
+                    const std::vector<BoxOccluderPlanes>& planes, const EyeVolume& eyes, double margin)
 {
+    // Every eye of the volume lies on the same side of every active polygon's plane (checked
+    // below), so the sides taken at the centre are every eye's, and the proof holds per eye.
+    const Vec3& eye = eyes.center;
     if (!(margin >= 0.0))
         margin = 0.0;
     if (active.empty() || planes.size() < active.size())
@@ -374,7 +378,7 @@ bool fusedInvisible(const std::vector<OccluderPolygon>& polygons, const std::vec
         const OccluderPolygon& polygon = polygons[active[j]];
         const BoxOccluderPlanes& own = planes[j];
         const double eyeDistance = polygon.plane.distance(eye);
-        if (!(std::abs(eyeDistance) > margin) || !std::isfinite(eyeDistance))
+        if (!(std::abs(eyeDistance) > margin + eyes.spread(polygon.plane.normal)) || !std::isfinite(eyeDistance))
             return false;
         if (polygon.oneSided && eyeDistance < 0.0)
             return false;
@@ -412,7 +416,7 @@ bool fusedInvisible(const std::vector<OccluderPolygon>& polygons, const std::vec
                     continue;
             }
             const Plane& supporting = planes[j].supporting[i];
-            if (!(supporting.distance(eye) > margin))
+            if (!(eyes.minDistance(supporting) > margin))
                 return false;
             if (supporting.normal != Vec3(0.0))
                 ++testedEdges;

@@ -25,20 +25,6 @@ BakedStore& bakedStore()
     return store;
 }
 
-// Largest distance from the eye to a corner of the near-plane rectangle.
-double nearPlaneReach(const View& view)
-{
-    const Mat4 clipToWorld = glm::inverse(view.projectionMatrix * view.viewMatrix);
-    double reach = 0.0;
-    for (int corner = 0; corner < 4; ++corner)
-    {
-        const Vec4 p = clipToWorld * Vec4((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0, -1.0, 1.0);
-        if (p.w != 0.0)
-            reach = std::max(reach, glm::length(Vec3(p) / p.w - view.eye));
-    }
-    return std::isfinite(reach) ? reach : 0.0;
-}
-
 const char* stageName(CellPortalStage stage)
 {
     switch (stage)
@@ -79,6 +65,7 @@ struct CellPortalModule::Impl
     CellObjects objects;
     std::vector<Aabb> objectBounds;
     double tolerance = 0.0;
+    Aabb subdivided; // union of the cells: outside it an eye is in no cell
     DebugRecord* record = nullptr;
 
     // The eye's source cell, cached while the eye stays in it: each stab-tree node's portal as it
@@ -244,6 +231,9 @@ void CellPortalModule::setScene(const Scene& scene)
         registerBakedCellPortalData(impl.data);
     }
     impl.tolerance = cellPortalTolerance(impl.data->graph);
+    impl.subdivided = Aabb();
+    for (const Aabb& cell : impl.data->graph.cells)
+        impl.subdivided.expand(cell);
     impl.objects = assignObjectsToCells(scene, impl.data->graph, impl.tolerance);
     impl.objectBounds.resize(scene.objects.size());
     for (const SceneObject& object : scene.objects)
@@ -275,6 +265,31 @@ void CellPortalModule::cull(const View& view, VisibleSet& visible)
         impl.cullFromCell(view.eye, impl.eyeCells[slot], slot);
     if (impl.record && !impl.eyeCells.empty())
         impl.record->eyeCell = impl.data->graph.cells[impl.eyeCells.front()];
+    visible.intersectWith(impl.kept);
+}
+
+// Any eye of the region stands in one of the cells its box meets (grown by the near plane's
+// reach, as for a single eye), so the union of those cells' PVS holds for all of them. A box that
+// leaves the subdivided space may hold eyes outside every cell: then everything may be seen. So
+// may one among stated cells (markers), which need not fill their bounds.
+void CellPortalModule::cullRegion(const ViewRegion& region, VisibleSet& visible)
+{
+    Impl& impl = *_impl;
+    if (!impl.data || impl.data->graph.cells.empty() || impl.data->graph.nodes.empty() || region.eyes.empty() ||
+        !region.eyes.finite())
+        return;
+    if (!impl.subdivided.contains(region.eyes.min) || !impl.subdivided.contains(region.eyes.max))
+        return;
+    impl.eyeCells.clear();
+    impl.data->graph.cellsOverlapping(region.eyes, std::max(impl.tolerance, region.maxNearReach), impl.eyeCells);
+    if (impl.eyeCells.empty())
+        return;
+    impl.kept.reset(visible.capacity());
+    for (ObjectId id : impl.objects.everywhere)
+        impl.kept.set(id);
+    for (std::uint32_t cell : impl.eyeCells)
+        for (ObjectId id : impl.data->sources[cell].cellToObject.ids())
+            impl.kept.set(id);
     visible.intersectWith(impl.kept);
 }
 } // namespace osgVis::core

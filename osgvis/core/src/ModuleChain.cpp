@@ -79,7 +79,7 @@ void ModuleChain::sceneReplaced(const Scene& scene, const std::vector<SceneChang
         m->sceneReplaced(scene, changes);
 }
 
-void ModuleChain::cull(const View& view, VisibleSet& visible)
+template <class Refine> void ModuleChain::runStages(VisibleSet& visible, Refine refine)
 {
     using Clock = std::chrono::steady_clock;
     if (!_scene)
@@ -100,7 +100,7 @@ void ModuleChain::cull(const View& view, VisibleSet& visible)
     for (std::size_t i = 0; i < _modules.size(); ++i)
     {
         const Clock::time_point start = Clock::now();
-        _modules[i]->cull(view, visible);
+        refine(*_modules[i]);
         const Clock::time_point end = Clock::now();
         StageTiming& t = _timings[i];
         t.module = _modules[i]->name();
@@ -114,5 +114,27 @@ void ModuleChain::cull(const View& view, VisibleSet& visible)
         if ((o.flags & OBJECT_ALWAYS_VISIBLE) && !removed && o.id < objects.size())
             visible.set(o.id);
     }
+}
+
+void ModuleChain::cull(const View& view, VisibleSet& visible)
+{
+    runStages(visible, [&](VisibilityModule& module) { module.cull(view, visible); });
+}
+
+bool ModuleChain::supportsRegions() const
+{
+    if (_modules.empty())
+        return false;
+    for (const auto& m : _modules)
+    {
+        if (!m->supportsRegions())
+            return false;
+    }
+    return true;
+}
+
+void ModuleChain::cullRegion(const ViewRegion& region, VisibleSet& visible)
+{
+    runStages(visible, [&](VisibilityModule& module) { module.cullRegion(region, visible); });
 }
 } // namespace osgVis::core

@@ -86,9 +86,11 @@ struct OctreeModule::Impl
     DebugRecord* debug = nullptr;
     Statistics statistics;
 
-    // Per-frame inputs.
+    // Per-frame inputs. A region query has a volume of eyes and no frustum (root plane mask 0).
     Vec3 eye{0.0};
+    EyeVolume eyes;
     const Frustum* frustum = nullptr;
+    unsigned rootPlaneMask = 0x3Fu;
     double nearDistance = 0.0;
     std::vector<std::uint32_t> active;
     std::vector<double> margins; // per polygon index, valid for `active` ones
@@ -106,6 +108,11 @@ struct OctreeModule::Impl
                       std::vector<std::uint32_t>& partial, TraversalOutput& out);
     bool depthSeparated(const OccluderPolygon& polygon, const Aabb& box) const;
     void chooseOccluders(const View& view, std::uint32_t k);
+    void chooseRegionOccluders(const ViewRegion& region, std::uint32_t k);
+    void rank(std::uint32_t o, double metric, std::uint32_t k);
+    void activateRanked();
+    void beginQuery(const OctreeOptions& options, const Vec3& center, const Vec3& halfExtent);
+    void traverseAll(const Scene& scene, const OctreeOptions& options, VisibleSet& visible);
     bool fusedHidden(const Aabb& box, const std::vector<std::uint32_t>& partial, TraversalOutput& out);
 };
 
@@ -222,7 +229,7 @@ bool OctreeModule::Impl::fusedHidden(const Aabb& box, const std::vector<std::uin
             out.fusedPlanes[g] = *candidatePlanes[members[g]];
             margin = std::max(margin, margins[group[g]]);
         }
-        if (fusedInvisible(polygons, group, out.fusedPlanes, eye, margin))
+        if (fusedInvisible(polygons, group, out.fusedPlanes, eyes, margin))
             return true;
     }
     return false;
@@ -245,19 +252,49 @@ void OctreeModule::Impl::chooseOccluders(const View& view, std::uint32_t k)
                                             [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; });
         if (!beyondNear || view.frustum.classify(polygonBounds[o]) == Containment::Outside)
             continue;
-        // Insertion into the best-first list; ties keep the lower index first.
-        auto at = std::upper_bound(ranked.begin(), ranked.end(), std::make_pair(metric, o),
-                                   [](const auto& a, const auto& b)
-                                   { return a.first > b.first || (a.first == b.first && a.second < b.second); });
-        ranked.insert(at, {metric, o});
-        if (ranked.size() > k)
-            ranked.pop_back();
+        rank(o, metric, k);
     }
+    activateRanked();
+}
+
+// Every direction counts, so no frustum test; a polygon is kept only when no eye of the region
+// comes within the near plane's reach of its plane (a view may clip it wherever it looks).
+void OctreeModule::Impl::chooseRegionOccluders(const ViewRegion& region, std::uint32_t k)
+{
+    ranked.clear();
+    for (std::uint32_t o : selector.potentialOccluders(selector.leafOf(eye)))
+    {
+        const OccluderPolygon& polygon = polygons[o];
+        const double metric = areaAngle(polygon, eye);
+        if (metric < threshold || (ranked.size() == k && metric <= ranked.back().first))
+            continue;
+        const double clearance = std::abs(polygon.plane.distance(eye)) - eyes.spread(polygon.plane.normal);
+        if (!(clearance > region.maxNearReach))
+            continue;
+        rank(o, metric, k);
+    }
+    activateRanked();
+}
+
+// Insertion into the best-first list; ties keep the lower index first.
+void OctreeModule::Impl::rank(std::uint32_t o, double metric, std::uint32_t k)
+{
+    auto at = std::upper_bound(ranked.begin(), ranked.end(), std::make_pair(metric, o),
+                               [](const auto& a, const auto& b)
+                               { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+    ranked.insert(at, {metric, o});
+    if (ranked.size() > k)
+        ranked.pop_back();
+}
+
+void OctreeModule::Impl::activateRanked()
+{
+    const double volumeReach = glm::length(eyes.halfExtent);
     for (const auto& [metric, o] : ranked)
     {
         double reach = 0.0;
         for (const Vec3& v : polygons[o].vertices)
-            reach = std::max(reach, glm::length(v - eye));
+            reach = std::max(reach, glm::length(v - eye) + volumeReach);
         margins[o] = 1e-6 * sceneSize + AngularMargin * reach;
         active.push_back(o);
     }
@@ -294,6 +331,7 @@ bool OctreeModule::Impl::depthSeparated(const OccluderPolygon& polygon, const Aa
         behind = std::min(behind, -eyeSide * polygon.plane.distance(corner));
         farthest = std::max(farthest, glm::length(corner - eye));
     }
+    farthest += glm::length(eyes.halfExtent);
     const double tolerance = farthest * farthest / (nearDistance * DepthResolution) + 1e-6 * sceneSize;
     return behind > tolerance;
 }
@@ -308,7 +346,7 @@ Occlusion OctreeModule::Impl::testBox(BoxOcclusionCache& cache, const Aabb& box,
     const auto hiddenBy = [&](std::uint32_t o, const BoxOccluderPlanes& planes)
     {
         ++out.statistics.planeTests;
-        return classify(polygons[o], planes, eye, margins[o]);
+        return classify(polygons[o], planes, eyes, margins[o]);
     };
 
     // Coherence: the occluder that hid this box last frame usually still does.
@@ -458,83 +496,40 @@ OctreeModule::Statistics OctreeModule::lastStatistics() const
     return _impl->statistics;
 }
 
+void OctreeModule::Impl::beginQuery(const OctreeOptions& options, const Vec3& center, const Vec3& halfExtent)
+{
+    ++frame;
+    eye = center;
+    eyes = EyeVolume{center, halfExtent};
+    statistics = Statistics();
+    if (debug)
+        debug->clear();
+    if (!options.temporalCoherence)
+    {
+        for (BoxOcclusionCache& cache : nodeCaches)
+            cache.clear();
+        for (BoxOcclusionCache& cache : objectCaches)
+            cache.clear();
+    }
+    active.clear();
+}
+
 void OctreeModule::cull(const View& view, VisibleSet& visible)
 {
     Impl& m = *_impl;
     if (!_scene || m.tree.empty())
         return;
-    ++m.frame;
-    m.eye = view.eye;
+    m.beginQuery(_options, view.eye, Vec3(0.0));
     m.frustum = &view.frustum;
-    m.statistics = Statistics();
-    if (m.debug)
-        m.debug->clear();
-    if (!_options.temporalCoherence)
-    {
-        for (BoxOcclusionCache& cache : m.nodeCaches)
-            cache.clear();
-        for (BoxOcclusionCache& cache : m.objectCaches)
-            cache.clear();
-    }
+    m.rootPlaneMask = 0x3Fu;
 
     // Occluders need a point eye: orthographic views and a broken eye get frustum culling only.
-    m.active.clear();
     const bool pointEye =
         !view.orthographic && std::isfinite(m.eye.x) && std::isfinite(m.eye.y) && std::isfinite(m.eye.z);
-    const Mat4& projection = view.projectionMatrix;
-    m.nearDistance = projection[3][2] / (projection[2][2] - 1.0);
-    if (pointEye && m.nearDistance > 0.0 && std::isfinite(m.nearDistance) && !m.polygons.empty())
-    {
+    m.nearDistance = nearDistance(view);
+    if (pointEye && m.nearDistance > 0.0 && !m.polygons.empty())
         m.chooseOccluders(view, _options.occluders);
-    }
-    m.statistics.activeOccluders = static_cast<std::uint32_t>(m.active.size());
-
-    // Serial top, parallel frontier subtrees, each with its own output; merged in slot order.
-    for (FrontierTask& task : m.frontier)
-        task.active = false;
-    m.serial.culled.clear();
-    m.serial.debugNodes.clear();
-    m.serial.statistics = Statistics();
-    const bool parallel = !m.frontier.empty() && !m.debug;
-    m.traverse(*_scene, _options, 0, 0, 0x3Fu, m.active, m.serial, parallel);
-    if (parallel)
-    {
-        tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, m.frontier.size(), 1),
-            [&](const tbb::blocked_range<std::size_t>& range)
-            {
-                for (std::size_t i = range.begin(); i != range.end(); ++i)
-                {
-                    FrontierTask& task = m.frontier[i];
-                    task.output.culled.clear();
-                    task.output.statistics = Statistics();
-                    if (task.active)
-                        m.traverse(*_scene, _options, task.node, task.depth, task.planeMask, task.occluders,
-                                   task.output, false);
-                }
-            },
-            m.affinity);
-    }
-
-    const std::vector<std::uint32_t>& items = m.tree.items();
-    const auto apply = [&](const TraversalOutput& out)
-    {
-        for (const Range& r : out.culled)
-            for (std::uint32_t i = r.first; i < r.first + r.count; ++i)
-                if (visible.test(items[i]))
-                    visible.clear(items[i]);
-        const Statistics& s = out.statistics;
-        m.statistics.nodesVisited += s.nodesVisited;
-        m.statistics.nodesInvisible += s.nodesInvisible;
-        m.statistics.nodesOutsideFrustum += s.nodesOutsideFrustum;
-        m.statistics.planeTests += s.planeTests;
-        m.statistics.cachedDecisions += s.cachedDecisions;
-    };
-    apply(m.serial);
-    if (parallel)
-        for (FrontierTask& task : m.frontier)
-            if (task.active)
-                apply(task.output);
+    m.traverseAll(*_scene, _options, visible);
 
     if (m.debug)
     {
@@ -543,5 +538,78 @@ void OctreeModule::cull(const View& view, VisibleSet& visible)
             m.debug->activeOccluders.push_back(m.polygons[o].vertices);
         m.debug->eyeCell = m.selector.leafBounds(m.selector.leafOf(m.eye));
     }
+}
+
+void OctreeModule::cullRegion(const ViewRegion& region, VisibleSet& visible)
+{
+    Impl& m = *_impl;
+    if (!_scene || m.tree.empty())
+        return;
+    const Vec3 center = region.center();
+    m.beginQuery(_options, center, region.halfExtent());
+    static const Frustum everywhere; // never consulted: the root plane mask is empty
+    m.frustum = &everywhere;
+    m.rootPlaneMask = 0u;
+    m.nearDistance = region.minNearDistance;
+    const bool finite = !region.eyes.empty() && region.eyes.finite();
+    if (finite && m.nearDistance > 0.0 && !m.polygons.empty())
+    {
+        // Looking every way, a region spends the most occluders a box's cache can relate to.
+        m.chooseRegionOccluders(region, std::uint32_t(BoxOcclusionCache::MaxRelations));
+    }
+    m.traverseAll(*_scene, _options, visible);
+    if (m.debug)
+        m.debug->nodes = m.serial.debugNodes;
+}
+
+// Serial top, parallel frontier subtrees, each with its own output; merged in slot order.
+void OctreeModule::Impl::traverseAll(const Scene& scene, const OctreeOptions& options, VisibleSet& visible)
+{
+    statistics.activeOccluders = static_cast<std::uint32_t>(active.size());
+    for (FrontierTask& task : frontier)
+        task.active = false;
+    serial.culled.clear();
+    serial.debugNodes.clear();
+    serial.statistics = Statistics();
+    const bool parallel = !frontier.empty() && !debug;
+    traverse(scene, options, 0, 0, rootPlaneMask, active, serial, parallel);
+    if (parallel)
+    {
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, frontier.size(), 1),
+            [&](const tbb::blocked_range<std::size_t>& range)
+            {
+                for (std::size_t i = range.begin(); i != range.end(); ++i)
+                {
+                    FrontierTask& task = frontier[i];
+                    task.output.culled.clear();
+                    task.output.statistics = Statistics();
+                    if (task.active)
+                        traverse(scene, options, task.node, task.depth, task.planeMask, task.occluders, task.output,
+                                 false);
+                }
+            },
+            affinity);
+    }
+
+    const std::vector<std::uint32_t>& items = tree.items();
+    const auto apply = [&](const TraversalOutput& out)
+    {
+        for (const Range& r : out.culled)
+            for (std::uint32_t i = r.first; i < r.first + r.count; ++i)
+                if (visible.test(items[i]))
+                    visible.clear(items[i]);
+        const Statistics& s = out.statistics;
+        statistics.nodesVisited += s.nodesVisited;
+        statistics.nodesInvisible += s.nodesInvisible;
+        statistics.nodesOutsideFrustum += s.nodesOutsideFrustum;
+        statistics.planeTests += s.planeTests;
+        statistics.cachedDecisions += s.cachedDecisions;
+    };
+    apply(serial);
+    if (parallel)
+        for (FrontierTask& task : frontier)
+            if (task.active)
+                apply(task.output);
 }
 } // namespace osgVis::core

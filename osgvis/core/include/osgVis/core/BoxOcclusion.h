@@ -16,6 +16,7 @@
 #include <osgVis/core/Aabb.h>
 #include <osgVis/core/OccluderPolygon.h>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -55,6 +56,23 @@ struct BoxOccluderPlanes
 // written to `corners` (corner indices as in Aabb::corner).
 int silhouetteCorners(const Vec3& edgeDirection, int corners[8]);
 
+// The eyes a decision must hold for: one point (zero half extent) or every point of an axial box
+// (a region of viewpoints). A plane test on the volume uses its nearest or farthest point.
+struct EyeVolume
+{
+    Vec3 center{0.0};
+    Vec3 halfExtent{0.0};
+
+    // How far the volume reaches from its centre along a unit `normal`.
+    double spread(const Vec3& normal) const
+    {
+        return std::abs(normal.x) * halfExtent.x + std::abs(normal.y) * halfExtent.y +
+               std::abs(normal.z) * halfExtent.z;
+    }
+    double minDistance(const Plane& plane) const { return plane.distance(center) - spread(plane.normal); }
+    double maxDistance(const Plane& plane) const { return plane.distance(center) + spread(plane.normal); }
+};
+
 // Computes the planes of `polygon` against `box`.
 void computePlanes(const OccluderPolygon& polygon, const Aabb& box, BoxOccluderPlanes& out);
 
@@ -63,7 +81,16 @@ void computePlanes(const OccluderPolygon& polygon, const Aabb& box, BoxOccluderP
 // never gives Invisible (an eye within `margin` of the polygon's plane gives Visible). It must
 // exceed rounding, e.g. 1e-9 of the scene's size. A one-sided polygon seen from its culled side
 // hides nothing: Visible. Allocation-free.
-Occlusion classify(const OccluderPolygon& polygon, const BoxOccluderPlanes& planes, const Vec3& eye, double margin);
+Occlusion classify(const OccluderPolygon& polygon, const BoxOccluderPlanes& planes, const EyeVolume& eyes,
+                   double margin);
+// For a volume of eyes: Invisible only when every eye of the volume has the box hidden; Visible
+// when no eye has any of it hidden, and also when the volume comes within `margin` of the
+// occluder's plane (no decision, as for a point eye on the plane).
+inline Occlusion classify(const OccluderPolygon& polygon, const BoxOccluderPlanes& planes, const Vec3& eye,
+                          double margin)
+{
+    return classify(polygon, planes, EyeVolume{eye, Vec3(0.0)}, margin);
+}
 
 // Convenience: computePlanes then classify.
 Occlusion classifyBox(const OccluderPolygon& polygon, const Aabb& box, const Vec3& eye, double margin);
@@ -76,6 +103,12 @@ Occlusion classifyBox(const OccluderPolygon& polygon, const Aabb& box, const Vec
 // tested. Conservative also for non-convex unions: the eye inside all those planes puts the box's
 // projection inside the kernel of the union's projected outline, which lies within the union.
 // `planes[j]` are the planes of polygons[active[j]] against `box`.
+// For a volume of eyes the union must hide the box from every one of them.
 bool fusedInvisible(const std::vector<OccluderPolygon>& polygons, const std::vector<std::uint32_t>& active,
-                    const std::vector<BoxOccluderPlanes>& planes, const Vec3& eye, double margin);
+                    const std::vector<BoxOccluderPlanes>& planes, const EyeVolume& eyes, double margin);
+inline bool fusedInvisible(const std::vector<OccluderPolygon>& polygons, const std::vector<std::uint32_t>& active,
+                           const std::vector<BoxOccluderPlanes>& planes, const Vec3& eye, double margin)
+{
+    return fusedInvisible(polygons, active, planes, EyeVolume{eye, Vec3(0.0)}, margin);
+}
 } // namespace osgVis::core

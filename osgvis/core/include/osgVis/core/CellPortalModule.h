@@ -31,6 +31,10 @@ public:
     const char* name() const override;
     void setScene(const Scene& scene) override;
     void cull(const View& view, VisibleSet& visible) override;
+    // Regions: the union of the PVS of every cell the region's eye box meets (the cell-to-object
+    // stage; no stab tree is walked, as sightlines through a box of eyes are not one LP).
+    bool supportsRegions() const override { return true; }
+    void cullRegion(const ViewRegion& region, VisibleSet& visible) override;
     void setDebugRecord(DebugRecord* record) override;
 
     // Use these data for the next setScene instead of looking them up (they must be baked for that

@@ -13,6 +13,10 @@ public:
     // Never culls a visible object: keeps every object whose bounds are not entirely outside one
     // frustum plane.
     void cull(const View& view, VisibleSet& visible) override;
+    // A region looks in every direction: the frustum stage keeps everything (the renderer
+    // intersects the region's answer with each view's frustum).
+    bool supportsRegions() const override { return true; }
+    void cullRegion(const ViewRegion&, VisibleSet&) override {}
 
 private:
     KdTree _tree;

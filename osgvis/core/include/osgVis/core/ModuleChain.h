@@ -40,7 +40,15 @@ public:
     void cull(const View& view, VisibleSet& visible);
     const std::vector<StageTiming>& lastTimings() const { return _timings; }
 
+    // True when every stage answers region queries (and there is at least one).
+    bool supportsRegions() const;
+    // The region query of every stage in turn, from the same start and with the same end as cull:
+    // objects some view of `region` may see. Requires supportsRegions().
+    void cullRegion(const ViewRegion& region, VisibleSet& visible);
+
 private:
+    // Every object less those reported Removed, then `refine` per stage, then always-visible ones.
+    template <class Refine> void runStages(VisibleSet& visible, Refine refine);
     void rememberRemoved(const SceneChange& change);
     std::vector<std::unique_ptr<VisibilityModule>> _modules;
     std::vector<StageTiming> _timings;

@@ -38,6 +38,11 @@ public:
     void setScene(const Scene& scene) override;
     void sceneChanged(const SceneChange& change) override;
     void cull(const View& view, VisibleSet& visible) override;
+    // Regions: the same traversal with every decision made for the whole box of eyes (a box is
+    // hidden only when the eye volume lies inside all the deciding planes), no frustum, up to 64
+    // occluders chosen around the box's centre, none that a region's near plane could clip.
+    bool supportsRegions() const override { return true; }
+    void cullRegion(const ViewRegion& region, VisibleSet& visible) override;
     void setDebugRecord(DebugRecord* record) override;
 
     const OctreeOptions& options() const { return _options; }

@@ -20,4 +20,11 @@ struct View
 // Fills eye, frustum and orthographic from the two matrices.
 View makeView(const Mat4& viewMatrix, const Mat4& projectionMatrix, double time = 0.0,
               std::uint32_t viewportWidth = 1280, std::uint32_t viewportHeight = 1024);
+
+// Distance from the eye to the near plane along the view direction (perspective views; 0 when the
+// projection gives none).
+double nearDistance(const View& view);
+// Largest distance from the eye to a corner of the near-plane rectangle: geometry closer than this
+// may be clipped away and so be seen through.
+double nearPlaneReach(const View& view);
 } // namespace osgVis::core

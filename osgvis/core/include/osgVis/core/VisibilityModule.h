@@ -3,6 +3,7 @@
 // keeps between frames, a view in, a visible set out, notification when the scene changes.
 #include <osgVis/core/DebugRecord.h>
 #include <osgVis/core/View.h>
+#include <osgVis/core/ViewRegion.h>
 #include <osgVis/core/VisibleSet.h>
 
 #include <memory>
@@ -43,6 +44,14 @@ public:
     // of a chain kept) and leaves holding a subset of them.
     // Guarantee (non-approximate modules): never culls a visible object; may keep hidden ones.
     virtual void cull(const View& view, VisibleSet& visible) = 0;
+
+    // Region queries (asynchronous visibility): true when cullRegion answers for a whole region of
+    // viewpoints. Modules that cannot keep the default: a chain with one of them has no region answer.
+    virtual bool supportsRegions() const { return false; }
+    // Like cull, for every view `region` holds and in every direction: never culls an object that
+    // some such view sees (non-approximate modules). Called only when supportsRegions(); it may
+    // share per-frame state with cull, so the two are never called concurrently on one module.
+    virtual void cullRegion(const ViewRegion& region, VisibleSet& visible) { (void)region, (void)visible; }
 
     // Debug views: when `record` is set, later queries describe their decisions into it (nullptr
     // stops). Modules without a spatial structure leave it untouched.

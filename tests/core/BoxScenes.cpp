@@ -1,0 +1,69 @@
+#include "BoxScenes.h"
+
+namespace osgVis::test
+{
+using namespace core;
+
+std::vector<Triangle> boxTriangles(const Vec3& lo, const Vec3& hi)
+{
+    const Aabb box(lo, hi);
+    const auto p = [&](int i) { return Vec3f(box.corner(i)); };
+    // Counter-clockwise seen from outside.
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    std::vector<Triangle> t;
+    for (const auto& q : quads)
+    {
+        t.push_back({p(q[0]), p(q[1]), p(q[2])});
+        t.push_back({p(q[0]), p(q[2]), p(q[3])});
+    }
+    return t;
+}
+
+Aabb boundsOf(const std::vector<Triangle>& triangles)
+{
+    Aabb bounds;
+    for (const Triangle& t : triangles)
+        for (const Vec3f& v : {t.a, t.b, t.c})
+            bounds.expand(Vec3(v));
+    return bounds;
+}
+
+ObjectId addTriangles(Scene& scene, const std::vector<Triangle>& triangles, const std::string& name,
+                      std::uint32_t flags)
+{
+    const ObjectId id = scene.addObject(boundsOf(triangles), std::uint32_t(triangles.size()), flags, name);
+    scene.objects[id].firstTriangle = std::uint32_t(scene.triangles.size());
+    scene.triangles.insert(scene.triangles.end(), triangles.begin(), triangles.end());
+    return id;
+}
+
+ObjectId addBox(Scene& scene, const Vec3& lo, const Vec3& hi, const std::string& name,
+                std::uint32_t flags)
+{
+    return addTriangles(scene, boxTriangles(lo, hi), name, flags);
+}
+
+City makeCity()
+{
+    City city;
+    for (int bx = 0; bx < 6; ++bx)
+        for (int by = 0; by < 6; ++by)
+            for (int q = 0; q < 4; ++q)
+            {
+                const double x0 = bx * 30.0 + (q & 1) * 12.0, y0 = by * 30.0 + (q >> 1) * 12.0;
+                const double height = 8.0 + double((bx * 7 + by * 13 + q * 5) % 11) * 2.5;
+                city.buildings.push_back(addBox(city.scene, {x0, y0, 0.0}, {x0 + 8.0, y0 + 8.0, height},
+                                                "building " + std::to_string(bx) + "," + std::to_string(by) +
+                                                    "," + std::to_string(q)));
+            }
+    for (int street = 0; street < 6; ++street)
+        for (int k = 0; k < 18; ++k)
+        {
+            const double x = street * 30.0 - 9.0 + (k % 2) * 8.0, y = k * 10.0 + 3.0;
+            addBox(city.scene, {x, y, 0.0}, {x + 1.0, y + 1.0, 1.5}, "kiosk " + std::to_string(street) + "," +
+                                                                         std::to_string(k));
+        }
+    return city;
+}
+
+} // namespace osgVis::test

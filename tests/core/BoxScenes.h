@@ -1,0 +1,29 @@
+#pragma once
+// Scenes of axial boxes for core tests: box objects with their triangles, and a small city of
+// blocks, buildings and street furniture.
+#include <osgVis/core/Scene.h>
+
+#include <string>
+#include <vector>
+
+namespace osgVis::test
+{
+// The 12 triangles of an axial box, counter-clockwise seen from outside.
+std::vector<core::Triangle> boxTriangles(const core::Vec3& lo, const core::Vec3& hi);
+core::Aabb boundsOf(const std::vector<core::Triangle>& triangles);
+core::ObjectId addTriangles(core::Scene& scene, const std::vector<core::Triangle>& triangles, const std::string& name,
+                            std::uint32_t flags = core::OBJECT_NONE);
+core::ObjectId addBox(core::Scene& scene, const core::Vec3& lo, const core::Vec3& hi, const std::string& name,
+                      std::uint32_t flags = core::OBJECT_NONE);
+
+// 6×6 blocks of 20×20 (streets 10 wide between them, street centres at x, y = -5 + 30·k), each block
+// four buildings of 8×8 with 4-wide alleys and deterministic heights, and street furniture
+// (1×1×1.5 boxes) along the kerbs.
+struct City
+{
+    core::Scene scene;
+    std::vector<core::ObjectId> buildings;
+};
+
+City makeCity();
+} // namespace osgVis::test
