@@ -20,6 +20,11 @@ struct ViewCuller::PerView
     osg::ref_ptr<const ExtractedScene> scene; // the one `chain` was built for
     core::VisibleSet visible;
     core::DebugRecord* debugRecord = nullptr; // the one `chain`'s stages were given
+    // Asynchronous visibility, when on and the chain answers regions; destroyed (its worker
+    // joined) before `scene`, which its worker may still use.
+    std::unique_ptr<core::AsyncVisibility> async;
+
+    ~PerView() { async.reset(); }
 };
 
 namespace
@@ -29,6 +34,12 @@ namespace
 core::Mat4 toCore(const osg::Matrixd& m)
 {
     return glm::make_mat4(m.ptr());
+}
+
+// The core scene of an extraction, kept alive (with the extraction) for as long as the pointer.
+std::shared_ptr<const core::Scene> sharedScene(const osg::ref_ptr<const ExtractedScene>& extraction)
+{
+    return std::shared_ptr<const core::Scene>(&extraction->scene, [keep = extraction](const core::Scene*) {});
 }
 } // namespace
 
@@ -45,6 +56,20 @@ void ViewCuller::setModes(const std::string& modes)
     std::lock_guard<std::mutex> lock(_mutex);
     _modes = modes;
     _views.clear();
+}
+
+void ViewCuller::setAsync(bool on, const core::AsyncOptions& options)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    _async = on;
+    _asyncOptions = options;
+    _views.clear();
+}
+
+bool ViewCuller::getAsync() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _async;
 }
 
 std::string ViewCuller::getModes() const
@@ -74,6 +99,8 @@ std::shared_ptr<ViewCuller::PerView> ViewCuller::viewFor(const osg::Referenced* 
         view = std::make_shared<PerView>();
         view->key = key;
         view->chain = core::createChain(_modes);
+        if (_async && view->chain.supportsRegions())
+            view->async = std::make_unique<core::AsyncVisibility>(_modes, _asyncOptions);
     }
     return view;
 }
@@ -119,10 +146,15 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     {
         // note: view->scene holds the extraction it names, so a match with `replaces` (which is only
         // ever the extraction right before `scene`) cannot be an address reused by another one.
-        if (view->scene && scene->replaces == view->scene.get())
+        const bool replaced = view->scene && scene->replaces == view->scene.get();
+        if (replaced)
             view->chain.sceneReplaced(scene->scene, scene->changes);
         else
             view->chain.setScene(scene->scene);
+        if (view->async && replaced)
+            view->async->sceneReplaced(sharedScene(scene), scene->changes);
+        else if (view->async)
+            view->async->setScene(sharedScene(scene));
         view->scene = scene;
     }
     const osg::Viewport* viewport = cv.getViewport();
@@ -131,12 +163,18 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         core::makeView(toCore(modelView), toCore(projection), frameStamp ? frameStamp->getSimulationTime() : 0.0,
                        viewport ? static_cast<std::uint32_t>(viewport->width()) : 1280u,
                        viewport ? static_cast<std::uint32_t>(viewport->height()) : 1024u);
-    view->chain.cull(coreView, view->visible);
+    CullStatistics figures;
+    figures.async = view->async != nullptr;
+    // A debug record describes the chain's own decisions: recording views cull synchronously.
+    if (!view->async || record || !view->async->cull(coreView, view->visible))
+    {
+        figures.asyncFallback = figures.async;
+        view->chain.cull(coreView, view->visible);
+    }
     const auto end = std::chrono::steady_clock::now();
     if (debugLock.owns_lock())
         debugLock.unlock();
 
-    CullStatistics figures;
     for (const core::SceneObject& object : scene->scene.objects)
     {
         if (scene->removed(object.id))

@@ -12,10 +12,11 @@ VisibilityGroup::VisibilityGroup() : _culler(new ViewCuller) {}
 
 VisibilityGroup::VisibilityGroup(const std::string& modes) : _culler(new ViewCuller(modes)) {}
 
-// note: a copy gets its own culler (its own extraction and per-view state), with the same modes.
+// note: a copy gets its own culler (its own extraction and per-view state), with the same modes and async.
 VisibilityGroup::VisibilityGroup(const VisibilityGroup& other, const osg::CopyOp& copyop)
     : osg::Group(other, copyop), _culler(new ViewCuller(other.getModes()))
 {
+    _culler->setAsync(other.getAsync());
 }
 
 VisibilityGroup::~VisibilityGroup() = default;
