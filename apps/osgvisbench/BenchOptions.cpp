@@ -1,5 +1,7 @@
 #include "BenchOptions.h"
 
+#include "../osgvisviewer/ThreadingModel.h"
+
 #include <cstdlib>
 #include <sstream>
 
@@ -94,7 +96,8 @@ std::string benchUsage()
            "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
            "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8]\n"
            "                   [--mask-slowdown K] [--cull-only]\n"
-           "                   [--dynamic]\n"
+           "                   [--dynamic] [--threading MODEL,...] [--async on|off|on,off]\n"
+           "                   [--async-lookahead N]\n"
            "                   [--json OUT.json] [--help]\n"
            "\n"
            "Renders every mode over the same walk in one process and measures it against the\n"
@@ -123,11 +126,21 @@ std::string benchUsage()
            "  streets every frame, 3 buildings are dropped on existing ones at 1/4 and at 1/2 of\n"
            "  the views, 3 are deleted at 1/3 and at 2/3 (seeded by --seed); the oracle renders\n"
            "  every frame's scene, and the number of changes applied is printed.\n"
+           "--threading M1,M2 / --async on,off: also render every osg and module-chain mode under each\n"
+           "  OSG threading model (SingleThreaded, CullDrawThreadPerContext, DrawThreadPerContext,\n"
+           "  CullThreadPerCameraDrawThreadPerContext; default SingleThreaded) with asynchronous\n"
+           "  visibility on and/or off (default off), and print the threading table: false-invisible,\n"
+           "  drawn fraction, the cull thread's median ms in osgVis and OSG's cull ms, frames that fell\n"
+           "  back to a synchronous cull, fps and its ratio to the same mode SingleThreaded, and for\n"
+           "  synchronous rows the views whose drawn set differs from the main table's pass. Set\n"
+           "  LP_NUM_THREADS (Mesa) when timing: llvmpipe's threads compete for the same cores.\n"
+           "--async-lookahead N: frames of predicted eye path an async region covers (default 4).\n"
            "Every rendered mode also gets its mis-drawn pixels: pixels of the oracle's exact image\n"
            "  (display resolution) showing an object the mode culled (where the oracle counts\n"
            "  pixels per object). Approximate modes report false-invisible objects, never fail.\n"
            "Exit status: 0 ok, 1 a conservative mode culled a visible object, gave different\n"
-           "visible sets at different thread counts, or the run failed; 2 bad command line.\n";
+           "visible sets at different thread counts or threading models, or the run failed;\n"
+           "2 bad command line.\n";
 }
 
 BenchOptions parseBenchOptions(int argc, char** argv)
@@ -196,6 +209,28 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.cullOnly = true;
         else if (flag == "--dynamic")
             options.dynamic = true;
+        else if (flag == "--threading" || flag == "--async")
+        {
+            try
+            {
+                const std::string text = value();
+                if (flag == "--async")
+                    options.async = viewer::parseOnOff(flag, text, true);
+                else
+                    for (const std::string& name : splitList(text, ','))
+                        options.threading.push_back(viewer::threadingModelName(viewer::parseThreadingModel(name)));
+            }
+            catch (const viewer::ThreadingNameError& error)
+            {
+                throw UsageError(error.what());
+            }
+        }
+        else if (flag == "--async-lookahead")
+        {
+            options.asyncLookAhead = unsigned(parseUnsigned(flag, value()));
+            if (options.asyncLookAhead < 1 || options.asyncLookAhead > 1000)
+                throw UsageError("--async-lookahead must lie between 1 and 1000");
+        }
         else
             throw UsageError("unknown argument '" + flag + "'");
     }
@@ -220,6 +255,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
         throw UsageError("--mask-slowdown " + std::to_string(options.maskSlowdown) + " over " +
                          std::to_string(sweptViews) + " views makes more than " + std::to_string(MaxMaskSweepFrames) +
                          " frames: give fewer --views or a smaller slowdown");
+    if (options.threadingTable() && (options.cullOnly || options.dynamic))
+        throw UsageError("--threading and --async render the walk: not with --cull-only or --dynamic");
     if (options.cullOnly && !options.sweeps() && !options.maskSweep())
         throw UsageError("--cull-only needs a sweep: give --speeds, --threads and/or --mask-deltas");
     return options;

@@ -38,11 +38,15 @@ struct BenchOptions
     unsigned maskSlowdown = 1;        // --mask-slowdown K: the Δ sweep's observer K times slower
     bool cullOnly = false;            // --cull-only: the sweeps alone, no oracle and no rendering
     bool dynamic = false;             // --dynamic: cars, dropped and deleted buildings during the walk (DynamicWalk)
+    std::vector<std::string> threading; // --threading A,B: OSG threading models of the threading table
+    std::vector<bool> async;            // --async on|off|on,off: async visibility settings of that table
+    unsigned asyncLookAhead = 4;        // --async-lookahead N: frames of eye path a region covers
     bool help = false;                // --help
     std::string commandLine;          // argv joined, recorded in the JSON
 
     bool sweeps() const { return !speeds.empty() || !threads.empty(); }
     bool maskSweep() const { return !maskDeltas.empty(); }
+    bool threadingTable() const { return !threading.empty() || !async.empty(); }
 };
 
 // Throws UsageError naming the offending argument.

@@ -115,6 +115,24 @@ struct MaskSweepRow
     std::vector<std::pair<std::string, std::size_t>> criticalReasons;
 };
 
+// One row of the threading table: a mode rendered under one OSG threading model, async on or off.
+struct ThreadingRow
+{
+    std::string mode;
+    std::string threading; // OSG's name of the model
+    bool async = false;
+    bool conservative = true;
+    std::uint64_t falseInvisible = 0;
+    std::uint32_t viewsWithFalseInvisible = 0;
+    std::optional<double> drawnFraction;
+    std::optional<double> osgVisMsMedian, osgVisMsP99; // the cull thread's time in osgVis per frame
+    std::optional<double> cullMsMedian;                 // OSG's whole cull traversal
+    std::optional<std::uint32_t> fallbackFrames;        // async rows whose chain answers regions
+    std::optional<double> fps;
+    std::optional<double> fpsVsSingleThreaded; // fps / fps of the same mode and async, SingleThreaded
+    std::optional<std::size_t> differingViews; // sync rows: views drawing another set than the main table's pass
+};
+
 struct BenchReport
 {
     std::string scene;
@@ -131,5 +149,6 @@ struct BenchReport
     SweepReport sweeps;
     std::vector<ProgressiveRow> progressive; // empty unless a mode has a cellportal stage
     std::vector<MaskSweepRow> maskSweep;     // empty without --mask-deltas
+    std::vector<ThreadingRow> threading;     // empty without --threading / --async
 };
 } // namespace osgVis::bench

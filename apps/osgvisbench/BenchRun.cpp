@@ -12,8 +12,10 @@
 #include "ModePass.h"
 #include "OracleReference.h"
 #include "ProgressiveTable.h"
+#include "ThreadingTable.h"
 
 #include <iostream>
+#include <map>
 #include <memory>
 
 namespace osgVis::bench
@@ -43,8 +45,9 @@ bool runsMode(const std::vector<BenchMode>& modes, BenchMode::Kind kind)
 
 // The oracle, then every mode rendered over `views` in one viewer, measured into report.modes.
 void renderModes(BenchReport& report, const viewer::ViewerScene& scene, const core::Walk& walk,
-                 const std::vector<BenchView>& views, const std::vector<BenchMode>& modes, unsigned supersample)
+                 const std::vector<BenchView>& views, const std::vector<BenchMode>& modes, const BenchOptions& options)
 {
+    const unsigned supersample = options.supersample;
     const core::Scene& model = scene.objects->scene;
     const OracleReference reference =
         computeOracleReference(*scene.model, *scene.objects, views, walk.width, walk.height, supersample);
@@ -56,6 +59,8 @@ void renderModes(BenchReport& report, const viewer::ViewerScene& scene, const co
     if (runsMode(modes, BenchMode::Kind::Exact))
         replay = std::make_unique<ExactReplay>(reference);
 
+    std::map<std::string, std::vector<core::VisibleSet>> mainPasses; // for the threading table
+    {
     BenchViewer viewer(walk.width, walk.height, walk.projection, *scene.model);
     EmittedObjects emittedObjects(*scene.objects);
     for (const BenchMode& mode : modes)
@@ -73,6 +78,9 @@ void renderModes(BenchReport& report, const viewer::ViewerScene& scene, const co
             std::cerr << "osgvisbench: warning: " << mode.name << ": " << pass.unmatchedLeaves
                       << " drawn leaves matched no instance of their drawable" << std::endl;
         report.modes.push_back(measureMode(mode, model, reference, pass));
+        if (options.threadingTable())
+            mainPasses[mode.name] = pass.emitted;
+    }
     }
     if (replay && replay->mismatchedQueries() != 0)
         std::cerr << "osgvisbench: warning: exact: the VisibilityGroup numbered objects differently from the "
@@ -80,6 +88,8 @@ void renderModes(BenchReport& report, const viewer::ViewerScene& scene, const co
                   << replay->mismatchedQueries() << " queries; those views drew everything" << std::endl;
     relateToBaselines(report.modes);
     report.views = views.size();
+    if (options.threadingTable())
+        report.threading = runThreadingTable(options, modes, scene, walk, views, reference, mainPasses);
 }
 } // namespace
 
@@ -112,7 +122,7 @@ BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& 
     if (wantsProgressiveTable(modes))
         report.progressive = runProgressiveTable(withTriangles->scene, walk);
     if (!options.cullOnly)
-        renderModes(report, scene, walk, views, modes, options.supersample);
+        renderModes(report, scene, walk, views, modes, options);
     if (options.sweeps())
     {
         report.sweeps =

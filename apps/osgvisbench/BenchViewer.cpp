@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <limits>
+#include <string>
 
 namespace osgVis::bench
 {
@@ -23,10 +24,11 @@ struct FinishFrame : osg::Camera::DrawCallback
 };
 } // namespace
 
-BenchViewer::BenchViewer(unsigned width, unsigned height, const core::WalkProjection& projection, osg::Node& model)
+BenchViewer::BenchViewer(unsigned width, unsigned height, const core::WalkProjection& projection, osg::Node& model,
+                         osgViewer::ViewerBase::ThreadingModel threading)
     : _viewer(new osgViewer::Viewer)
 {
-    _viewer->setThreadingModel(osgViewer::Viewer::SingleThreaded);
+    _viewer->setThreadingModel(threading);
     _viewer->setKeyEventSetsDone(0);
     _viewer->setQuitEventSetsDone(false);
 
@@ -48,9 +50,20 @@ BenchViewer::BenchViewer(unsigned width, unsigned height, const core::WalkProjec
         throw ViewerError("the offscreen viewer failed to realize its OpenGL context");
 }
 
+BenchViewer::~BenchViewer()
+{
+    _viewer->stopThreading(); // the last draw may still run on a draw thread
+}
+
 void BenchViewer::setSceneData(osg::Node* scene)
 {
+    // The draw thread must finish the previous graph's last frame before the graph goes.
+    const bool threaded = _viewer->areThreadsRunning();
+    if (threaded)
+        _viewer->stopThreading();
     _viewer->setSceneData(scene);
+    if (threaded)
+        _viewer->startThreading();
 }
 
 BenchViewer::FrameTiming BenchViewer::renderFrame(const BenchView& view)
@@ -76,10 +89,20 @@ BenchViewer::FrameTiming BenchViewer::renderFrame(const BenchView& view)
 
 const osgUtil::RenderStage& BenchViewer::lastRenderStage() const
 {
-    // note: a single-threaded viewer always culls and draws through the renderer's first SceneView.
+    // note: a single-threaded viewer always culls through the renderer's first SceneView; threaded
+    // ones alternate between two, and a SceneView's cull visitor carries the number of the frame
+    // it last culled.
     const auto* renderer = dynamic_cast<const osgViewer::Renderer*>(_viewer->getCamera()->getRenderer());
     if (!renderer || !renderer->getSceneView(0) || !renderer->getSceneView(0)->getRenderStage())
         throw ViewerError("the viewer has no render stage to read the drawn objects from");
-    return *renderer->getSceneView(0)->getRenderStage();
+    const unsigned frameNumber = _viewer->getFrameStamp()->getFrameNumber();
+    for (unsigned i = 0; i < 2; ++i)
+    {
+        const osgUtil::SceneView* sceneView = renderer->getSceneView(i);
+        if (sceneView && sceneView->getRenderStage() && sceneView->getCullVisitor() &&
+            sceneView->getCullVisitor()->getTraversalNumber() == frameNumber)
+            return *sceneView->getRenderStage();
+    }
+    throw ViewerError("no SceneView of the renderer culled frame " + std::to_string(frameNumber));
 }
 } // namespace osgVis::bench

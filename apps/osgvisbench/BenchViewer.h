@@ -1,8 +1,9 @@
 #pragma once
-// The one offscreen viewer every mode renders in: a pbuffer of the walk's size, single-threaded
-// (cull and draw of a frame on this thread, so the render stage can be read back right after the
-// frame), the walk's fixed projection and near/far, small-feature culling off, and a glFinish at
-// the end of every frame so a frame's wall time includes the GPU work it queued.
+// The one offscreen viewer every mode renders in: a pbuffer of the walk's size, single-threaded by
+// default (the threading table runs the others), the walk's fixed projection and near/far,
+// small-feature culling off, and a glFinish at the end of every frame so a frame's wall time
+// includes the GPU work it queued. The render stage of the frame just culled can be read back
+// after frame() under every model: OSG returns only once the frame's cull is done.
 #include "BenchView.h"
 
 #include <osgVis/core/Walk.h>
@@ -24,7 +25,9 @@ class BenchViewer
 public:
     // Compiles the GL objects of `model` once at realize, so that no mode pays the first upload of
     // buffers and textures inside its timed frames. Throws std::runtime_error when no pbuffer can be made.
-    BenchViewer(unsigned width, unsigned height, const core::WalkProjection& projection, osg::Node& model);
+    BenchViewer(unsigned width, unsigned height, const core::WalkProjection& projection, osg::Node& model,
+                osgViewer::ViewerBase::ThreadingModel threading = osgViewer::ViewerBase::SingleThreaded);
+    ~BenchViewer();
 
     void setSceneData(osg::Node* scene);
 
@@ -35,7 +38,8 @@ public:
     };
     FrameTiming renderFrame(const BenchView& view);
 
-    // The main render stage of the frame just rendered (its bins still hold the frame's leaves).
+    // The main render stage of the frame just culled (its bins still hold the frame's leaves; with a
+    // draw thread, it may be drawing them meanwhile, which only reads them).
     const osgUtil::RenderStage& lastRenderStage() const;
 
 private:

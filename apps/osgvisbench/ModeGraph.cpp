@@ -9,16 +9,24 @@ namespace osgVis::bench
 {
 namespace
 {
-osg::ref_ptr<osg::Node> underVisibilityGroup(osg::Node& model, const std::string& chain)
+osg::ref_ptr<osg::Node> underVisibilityGroup(osg::Node& model, const std::string& chain, bool async = false,
+                                             unsigned asyncLookAhead = 4)
 {
     osg::ref_ptr<VisibilityGroup> group = new VisibilityGroup;
     group->setModes(chain);
+    if (async)
+    {
+        core::AsyncOptions options;
+        options.lookAheadFrames = asyncLookAhead;
+        group->setAsync(true, options);
+    }
     group->addChild(&model);
     return group;
 }
 } // namespace
 
-osg::ref_ptr<osg::Node> buildModeGraph(const BenchMode& mode, osg::Node& model, const ExtractedScene& scene)
+osg::ref_ptr<osg::Node> buildModeGraph(const BenchMode& mode, osg::Node& model, const ExtractedScene& scene, bool async,
+                                       unsigned asyncLookAhead)
 {
     switch (mode.kind)
     {
@@ -31,6 +39,6 @@ osg::ref_ptr<osg::Node> buildModeGraph(const BenchMode& mode, osg::Node& model, 
     case BenchMode::Kind::ModuleChain:
         break;
     }
-    return underVisibilityGroup(model, mode.chain);
+    return underVisibilityGroup(model, mode.chain, async, asyncLookAhead);
 }
 } // namespace osgVis::bench

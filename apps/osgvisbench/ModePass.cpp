@@ -6,7 +6,8 @@ namespace osgVis::bench
 {
 PassResult renderModePass(const std::string& label, BenchViewer& viewer, const std::vector<BenchView>& views,
                           EmittedObjects& emittedObjects, std::size_t objectCount,
-                          const std::function<void(std::size_t)>& beforeView)
+                          const std::function<void(std::size_t)>& beforeView,
+                          const std::function<void(std::size_t)>& afterView)
 {
     PassResult pass;
     if (views.empty())
@@ -22,6 +23,8 @@ PassResult renderModePass(const std::string& label, BenchViewer& viewer, const s
         const BenchViewer::FrameTiming timing = viewer.renderFrame(views[v]);
         pass.renderSeconds += timing.seconds;
         pass.cullMs.push_back(timing.cullMs);
+        if (afterView)
+            afterView(v);
 
         core::VisibleSet emitted(objectCount);
         emittedObjects.collect(viewer.lastRenderStage(), views[v].view, emitted);

@@ -24,7 +24,9 @@ struct PassResult
 // untimed priming frame at the first view comes first and is not counted: it builds what modes
 // build lazily on their first cull (scene extraction, spatial hierarchy, query objects), which is
 // set-up, not per-frame cost.
+// `afterView(v)` runs once view v is culled, outside the timed region.
 PassResult renderModePass(const std::string& label, BenchViewer& viewer, const std::vector<BenchView>& views,
                           EmittedObjects& emittedObjects, std::size_t objectCount,
-                          const std::function<void(std::size_t)>& beforeView);
+                          const std::function<void(std::size_t)>& beforeView,
+                          const std::function<void(std::size_t)>& afterView = {});
 } // namespace osgVis::bench

@@ -148,6 +148,33 @@ void writeProgressive(std::ostream& out, const std::vector<ProgressiveRow>& rows
             << ", \"objects_fraction\": " << jsonNumber(rows[i].objectsFraction) << "}";
     out << (rows.empty() ? "],\n" : "\n  ],\n");
 }
+std::string jsonCount(const std::optional<std::uint64_t>& value)
+{
+    return value ? std::to_string(*value) : "null";
+}
+
+void writeThreading(std::ostream& out, const std::vector<ThreadingRow>& rows)
+{
+    out << "  \"threading\": [";
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+        const ThreadingRow& row = rows[i];
+        out << (i ? ",\n" : "\n") << "    {\"mode\": " << jsonString(row.mode)
+            << ", \"threading\": " << jsonString(row.threading) << ", \"async\": " << (row.async ? "true" : "false")
+            << ", \"false_invisible\": " << row.falseInvisible
+            << ", \"drawn_fraction\": " << jsonNumber(row.drawnFraction)
+            << ",\n     \"osgvis_ms_median\": " << jsonNumber(row.osgVisMsMedian)
+            << ", \"osgvis_ms_p99\": " << jsonNumber(row.osgVisMsP99)
+            << ", \"cull_ms_median\": " << jsonNumber(row.cullMsMedian)
+            << ", \"fallback_frames\": "
+            << jsonCount(row.fallbackFrames ? std::optional<std::uint64_t>(*row.fallbackFrames) : std::nullopt)
+            << ",\n     \"fps\": " << jsonNumber(row.fps)
+            << ", \"fps_vs_single_threaded\": " << jsonNumber(row.fpsVsSingleThreaded)
+            << ", \"views_differing_from_main_pass\": "
+            << jsonCount(row.differingViews ? std::optional<std::uint64_t>(*row.differingViews) : std::nullopt) << "}";
+    }
+    out << (rows.empty() ? "],\n" : "\n  ],\n");
+}
 } // namespace
 
 void writeReportJson(std::ostream& out, const BenchReport& report)
@@ -177,6 +204,7 @@ void writeReportJson(std::ostream& out, const BenchReport& report)
     out << "  },\n";
     writeProgressive(out, report.progressive);
     writeMaskSweep(out, report.maskSweep);
+    writeThreading(out, report.threading);
     writeSweeps(out, report.sweeps);
     out << "}\n";
 }

@@ -57,6 +57,29 @@ void writeModeTable(std::ostream& out, const BenchReport& report)
     }
 }
 
+void writeThreadingTable(std::ostream& out, const std::vector<ThreadingRow>& rows)
+{
+    out << "\nthreading (osgVis ms: the cull thread's time in osgVis per frame; fallback: async frames no region held;\n"
+           "same: views drawing the main table's set, synchronous rows):\n";
+    const std::size_t nameWidth = nameColumnWidth(rows, [](const ThreadingRow& row) { return row.mode; });
+    out << leftCell("mode", nameWidth) << cell("threading", 41) << cell("async", 6) << cell("false-invis", 12)
+        << cell("drawn%", 8) << cell("osgVis ms med/p99", 19) << cell("cull ms", 9) << cell("fallback", 9)
+        << cell("fps", 8) << cell("vs single", 10) << cell("same", 10) << "\n";
+    for (const ThreadingRow& row : rows)
+    {
+        std::string sameCell = "-";
+        if (row.differingViews)
+            sameCell = *row.differingViews == 0 ? "all" : std::to_string(*row.differingViews) + " differ";
+        out << leftCell(row.mode, nameWidth) << cell(row.threading, 41) << cell(row.async ? "on" : "off", 6)
+            << cell(std::to_string(row.falseInvisible), 12) << cell(formatted(row.drawnFraction, "%.1f", 100.0), 8)
+            << cell(formatted(row.osgVisMsMedian, "%.3f") + "/" + formatted(row.osgVisMsP99, "%.3f"), 19)
+            << cell(formatted(row.cullMsMedian, "%.2f"), 9)
+            << cell(row.fallbackFrames ? std::to_string(*row.fallbackFrames) : "-", 9)
+            << cell(formatted(row.fps, "%.1f"), 8) << cell(formatted(row.fpsVsSingleThreaded, "%.2fx"), 10)
+            << cell(sameCell, 10) << "\n";
+    }
+}
+
 void writeSweepTable(std::ostream& out, const SweepReport& sweeps)
 {
     out << "\ncull-only sweeps (module chain on the extracted scene, no rendering; ms per query):\n";
@@ -169,6 +192,8 @@ void writeReportTable(std::ostream& out, const BenchReport& report)
         writeSweepTable(out, report.sweeps);
     if (!report.maskSweep.empty())
         writeMaskSweepTable(out, report.maskSweep);
+    if (!report.threading.empty())
+        writeThreadingTable(out, report.threading);
     out.flush();
 }
 } // namespace osgVis::bench

@@ -48,6 +48,29 @@ int reportNondeterminism(const BenchReport& report)
     }
     return failures;
 }
+// Threading-table rows of conservative modes that culled a visible object or, synchronous, drew
+// other sets than the single-threaded pass; prints one line each.
+int reportThreadingFailures(const BenchReport& report)
+{
+    int failures = 0;
+    for (const ThreadingRow& row : report.threading)
+    {
+        const std::string name = row.mode + " (" + row.threading + (row.async ? ", async" : "") + ")";
+        if (row.conservative && row.falseInvisible != 0)
+        {
+            std::cerr << "osgvisbench: FAIL: conservative mode '" << name << "' culled " << row.falseInvisible
+                      << " visible objects in " << row.viewsWithFalseInvisible << " views" << std::endl;
+            ++failures;
+        }
+        if (row.conservative && row.differingViews && *row.differingViews != 0)
+        {
+            std::cerr << "osgvisbench: FAIL: synchronous mode '" << name << "' drew other objects than single-threaded in "
+                      << *row.differingViews << " views" << std::endl;
+            ++failures;
+        }
+    }
+    return failures;
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -77,7 +100,8 @@ int main(int argc, char** argv)
         writeReportTable(std::cout, report);
         if (!options.jsonFile.empty())
             saveReportJson(options.jsonFile, report);
-        const int failures = reportFalseInvisible(report) + reportNondeterminism(report);
+        const int failures =
+            reportFalseInvisible(report) + reportNondeterminism(report) + reportThreadingFailures(report);
         return failures == 0 ? 0 : 1;
     }
     catch (const std::exception& e)

@@ -53,8 +53,8 @@ private:
     CullingModes& _owner;
 };
 
-CullingModes::CullingModes(osg::Node* model, const std::string& mode)
-    : _model(model), _slot(new osg::Group), _mode(OsgMode), _requested(OsgMode)
+CullingModes::CullingModes(osg::Node* model, const std::string& mode, bool async)
+    : _model(model), _slot(new osg::Group), _mode(OsgMode), _requested(OsgMode), _async(async)
 {
     _slot->setName("osgvisviewer culling mode");
     _slot->addChild(_model.get());
@@ -87,6 +87,7 @@ void CullingModes::apply(const std::string& mode)
             {
                 _group = new VisibilityGroup;
                 _group->setName("osgvisviewer visibility");
+                _group->setAsync(_async);
                 _group->addChild(_model.get());
             }
             _group->setModes(mode);

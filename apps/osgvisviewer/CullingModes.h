@@ -23,7 +23,8 @@ void checkMode(const std::string& mode);
 class CullingModes
 {
 public:
-    CullingModes(osg::Node* model, const std::string& mode);
+    // `async`: the VisibilityGroup culls with asynchronous visibility (VisibilityGroup::setAsync).
+    CullingModes(osg::Node* model, const std::string& mode, bool async = false);
 
     // The node to put in the viewer's scene: it holds the model, directly or under the group.
     osg::Group* node() const { return _slot.get(); }
@@ -43,5 +44,6 @@ private:
     osg::ref_ptr<VisibilityGroup> _group;
     std::string _mode;
     std::string _requested;
+    bool _async = false;
 };
 } // namespace osgVis::viewer

@@ -94,7 +94,7 @@ int renderHeadless(const ViewerScene& scene, const ViewerOptions& options)
         return 1;
     }
 
-    CullingModes modes(scene.model.get(), options.mode);
+    CullingModes modes(scene.model.get(), options.mode, options.async);
     DebugMap map(*scene.objects, modes);
     osg::ref_ptr<osg::Group> root = map.sceneWithMap(modes);
 

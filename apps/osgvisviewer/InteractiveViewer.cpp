@@ -3,6 +3,7 @@
 #include "BuildingTool.h"
 #include "CameraSetup.h"
 #include "CullingModes.h"
+#include "ThreadingModel.h"
 #include "DebugMap.h"
 #include "WalkManipulator.h"
 
@@ -93,11 +94,13 @@ int runInteractive(const ViewerScene& scene, const ViewerOptions& options)
         return 3;
     }
 
-    CullingModes modes(scene.model.get(), options.mode);
+    CullingModes modes(scene.model.get(), options.mode, options.async);
     DebugMap map(*scene.objects, modes);
     osg::ref_ptr<osg::Group> root = map.sceneWithMap(modes);
 
     osgViewer::Viewer viewer;
+    if (!options.threading.empty())
+        viewer.setThreadingModel(parseThreadingModel(options.threading));
     viewer.setSceneData(root.get());
     viewer.setUpViewInWindow(50, 50, int(scene.walk.width), int(scene.walk.height));
     osg::Camera* camera = viewer.getCamera();

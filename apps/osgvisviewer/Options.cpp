@@ -1,5 +1,7 @@
 #include "Options.h"
 
+#include "ThreadingModel.h"
+
 #include <sstream>
 #include <vector>
 
@@ -72,6 +74,20 @@ ViewerOptions parseOptions(int argc, char** argv)
             options.triangles = parseUnsigned(arg, value());
         else if (arg == "--seed")
             options.seed = std::uint32_t(parseUnsigned(arg, value()));
+        else if (arg == "--threading" || arg == "--async")
+        {
+            try
+            {
+                if (arg == "--async")
+                    options.async = parseOnOff(arg, value(), false).front();
+                else
+                    options.threading = threadingModelName(parseThreadingModel(value()));
+            }
+            catch (const ThreadingNameError& error)
+            {
+                throw OptionsError(error.what());
+            }
+        }
         else if (arg.size() > 1 && arg[0] == '-')
             throw OptionsError("unknown option '" + arg + "' (see --help)");
         else if (options.scenePath.empty())
@@ -98,7 +114,8 @@ std::string usageText(const std::string& programName)
     std::ostringstream out;
     out << "usage: " << programName
         << " [SCENE] [--mode M] [--walk FILE] [--record FILE] [--headless OUTDIR] [--size WxH]\n"
-           "       [--generate office|city|floor|tetra] [--triangles N] [--seed S] [--help]\n"
+           "       [--generate office|city|floor|tetra] [--triangles N] [--seed S]\n"
+           "       [--threading MODEL] [--async on|off] [--help]\n"
            "\n"
            "Walks through SCENE (any model OpenSceneGraph reads, or a .pvs baked by osgvispvs: the model it\n"
            "names, culled with its cells and portals) or a generated scene, culled by mode M.\n"
@@ -115,6 +132,13 @@ std::string usageText(const std::string& programName)
            "  --generate KIND    generate an office, city or tetra scene instead of loading one\n"
            "  --triangles N      size of the generated scene (default 200000)\n"
            "  --seed S           seed of the generated scene (default 1)\n"
+           "  --threading MODEL  OSG threading model of the window: " << threadingModelChoices() << "\n"
+           "                     (default: OSG's choice; key n cycles them); --headless renders\n"
+           "                     SingleThreaded so captures stay in step with their frame\n"
+           "  --async on|off     asynchronous visibility (default off): a worker per view computes the\n"
+           "                     visible set of the region the eye is heading into; the cull thread\n"
+           "                     only intersects it with the frustum (stats, key i: osgVis cull ms,\n"
+           "                     osgVis async fallback)\n"
            "\n"
            "Keys: W/A/S/D or arrows move, Q/E down/up, left-drag looks, wheel changes speed,\n"
            "      m next culling mode, p play the walk, r start/stop recording, t top-down map,\n"

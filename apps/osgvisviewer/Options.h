@@ -23,6 +23,8 @@ struct ViewerOptions
     std::string recordPath;           // where `r` saves the recorded eye path
     std::string headlessDir;          // non-empty: render the walk offscreen into this folder
     unsigned width = 0, height = 0;   // pixels; 0 keeps the walk's own size
+    std::string threading;            // --threading: an OSG threading model name; empty: OSG's choice
+    bool async = false;               // --async on: asynchronous visibility for the module chains
     bool help = false;
 };
 

@@ -78,3 +78,13 @@ TEST(ViewerErrors, UnusableModelsAreRefused)
     EXPECT_EQ(garbage.exitCode, 1) << garbage.output;
     EXPECT_NE(garbage.output.find("cannot read scene"), std::string::npos) << garbage.output;
 }
+
+TEST(ViewerErrors, UnknownThreadingModelOrAsyncValueIsRefused)
+{
+    const auto model = runViewer("--generate office --triangles 2000 --threading Fastest");
+    EXPECT_NE(model.exitCode, 0);
+    EXPECT_NE(model.output.find("DrawThreadPerContext"), std::string::npos) << model.output;
+    const auto async = runViewer("--generate office --triangles 2000 --async maybe");
+    EXPECT_NE(async.exitCode, 0);
+    EXPECT_NE(async.output.find("--async"), std::string::npos) << async.output;
+}

@@ -11,7 +11,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 using namespace osgVis::test;
 
@@ -145,4 +147,62 @@ TEST(BenchApp, NanGeometryIsKeptAndNeverCrashes)
     // Its bounds are not finite, so frustum may not cull it in any view.
     EXPECT_EQ(numberField(modeObject(text, "frustum"), "drawn_fraction"), 1.0) << text;
     EXPECT_EQ(numberField(modeObject(text, "frustum"), "false_invisible"), 0.0) << text;
+}
+
+namespace
+{
+// The rows of the JSON's "threading" array, one text per row.
+std::vector<std::string> threadingRows(const std::string& json)
+{
+    std::vector<std::string> rows;
+    const std::size_t start = json.find("\"threading\": [");
+    const std::size_t end = json.find("]", start);
+    if (start == std::string::npos || end == std::string::npos)
+        return rows;
+    for (std::size_t at = json.find("{\"mode\"", start); at != std::string::npos && at < end;)
+    {
+        const std::size_t next = json.find("{\"mode\"", at + 1);
+        rows.push_back(json.substr(at, std::min(next, end) - at));
+        at = next;
+    }
+    return rows;
+}
+} // namespace
+
+TEST(BenchApp, ThreadingTableRunsEveryModelSyncAndAsyncConservatively)
+{
+    const std::filesystem::path json = scratchFile("threading.json");
+    const AppRun run = runBench("--generate city --triangles 5000 --views 12 --size 160x128 --modes osg,frustum+octree"
+                                " --threading SingleThreaded,CullDrawThreadPerContext,DrawThreadPerContext,"
+                                "CullThreadPerCameraDrawThreadPerContext --async on,off --json '" +
+                                json.string() + "'");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("threading (osgVis ms"), std::string::npos) << run.output;
+    const std::vector<std::string> rows = threadingRows(readText(json));
+    ASSERT_EQ(rows.size(), 4u * 3u) << "osg (sync only) and frustum+octree sync and async, per model";
+    std::size_t asyncRows = 0;
+    for (const std::string& row : rows)
+    {
+        EXPECT_EQ(numberField(row, "false_invisible"), 0.0) << row;
+        EXPECT_GT(numberField(row, "fps").value_or(0), 0.0) << row;
+        if (row.find("\"async\": true") != std::string::npos)
+        {
+            ++asyncRows;
+            EXPECT_TRUE(numberField(row, "fallback_frames").has_value()) << row;
+        }
+        else
+            EXPECT_EQ(numberField(row, "views_differing_from_main_pass"), 0.0) << row;
+        if (row.find("frustum+octree") != std::string::npos)
+            EXPECT_GE(numberField(row, "osgvis_ms_median").value_or(-1), 0.0) << row;
+    }
+    EXPECT_EQ(asyncRows, 4u);
+}
+
+TEST(BenchApp, UnknownThreadingModelOrAsyncValueExitsTwo)
+{
+    const AppRun model = runBench("--generate city --modes osg --threading Fastest");
+    EXPECT_EQ(model.exitCode, 2);
+    EXPECT_NE(model.output.find("CullThreadPerCameraDrawThreadPerContext"), std::string::npos) << model.output;
+    EXPECT_EQ(runBench("--generate city --modes osg --async maybe").exitCode, 2);
+    EXPECT_EQ(runBench("--generate city --modes frustum --async on --cull-only --threads 1").exitCode, 2);
 }
