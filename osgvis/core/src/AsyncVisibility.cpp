@@ -44,7 +44,7 @@ void AsyncVisibility::setScene(std::shared_ptr<const Scene> scene)
     _lastEye.reset();
     const Aabb bounds = scene ? scene->bounds() : Aabb();
     const double diagonal = bounds.empty() || !bounds.finite() ? 1.0 : std::max(glm::length(bounds.extent()), 1e-9);
-    _slack = _options.slack > 0.0 ? _options.slack : 1e-3 * diagonal;
+    _slack = _options.slack > 0.0 ? _options.slack : 1e-4 * diagonal;
     _maxPath = MaxPathFraction * diagonal;
     {
         std::lock_guard<std::mutex> lock(_mutex);

@@ -27,7 +27,7 @@ namespace osgVis::core
 struct AsyncOptions
 {
     std::uint32_t lookAheadFrames = 4; // a region covers the path the eye takes in this many frames
-    double slack = 0.0;                // grows a region's box every way (world units); 0: 1/1000 of the scene's diagonal
+    double slack = 0.0;                // grows a region's box every way (world units); 0: 1/10000 of the scene's diagonal
 };
 
 struct AsyncStatistics
