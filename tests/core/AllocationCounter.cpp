@@ -39,3 +39,42 @@ void operator delete(void* p, std::size_t) noexcept
 {
     std::free(p);
 }
+
+// The rest of the replaceable set, so every allocation of the process pairs malloc with free:
+// libstdc++'s std::get_temporary_buffer (stable_partition, stable_sort) uses the nothrow form, and
+// AddressSanitizer reports a nothrow new of its own freed by the std::free above as a mismatch.
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept
+{
+    ++allocations;
+    return std::malloc(size ? size : 1);
+}
+
+void* operator new[](std::size_t size)
+{
+    return operator new(size);
+}
+
+void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept
+{
+    return operator new(size, tag);
+}
+
+void operator delete(void* p, const std::nothrow_t&) noexcept
+{
+    std::free(p);
+}
+
+void operator delete[](void* p) noexcept
+{
+    std::free(p);
+}
+
+void operator delete[](void* p, std::size_t) noexcept
+{
+    std::free(p);
+}
+
+void operator delete[](void* p, const std::nothrow_t&) noexcept
+{
+    std::free(p);
+}

@@ -24,6 +24,8 @@
 
 #include <gtest/gtest.h>
 
+using osgVis::test::CaptureImage;
+using osgVis::test::createTestContext;
 using osgVis::test::makeBox;
 
 namespace
@@ -69,31 +71,6 @@ osg::ref_ptr<osg::Node> wrap(osg::Group* group, const std::vector<osg::ref_ptr<o
     return shifted;
 }
 
-struct Capture : public osg::Camera::DrawCallback
-{
-    osg::ref_ptr<osg::Image> image = new osg::Image;
-    void operator()(osg::RenderInfo&) const override { image->readPixels(0, 0, Width, Height, GL_RGBA, GL_UNSIGNED_BYTE); }
-};
-
-osg::ref_ptr<osg::GraphicsContext> createContext()
-{
-    osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
-    traits->readDISPLAY();
-    traits->width = Width;
-    traits->height = Height;
-    traits->red = traits->green = traits->blue = traits->alpha = 8;
-    traits->depth = 24;
-    traits->windowDecoration = false;
-    traits->doubleBuffer = true;
-    traits->pbuffer = true;
-    osg::ref_ptr<osg::GraphicsContext> gc = osg::GraphicsContext::createGraphicsContext(traits);
-    if (!gc)
-    {
-        traits->pbuffer = false; // some GLX servers lack pbuffers: a small window does as well
-        gc = osg::GraphicsContext::createGraphicsContext(traits);
-    }
-    return gc;
-}
 
 enum class Culling
 {
@@ -114,7 +91,7 @@ Frame render(osg::Node* scene, Culling culling,
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(threading);
     osg::Camera* camera = viewer.getCamera();
-    osg::ref_ptr<osg::GraphicsContext> gc = createContext();
+    osg::ref_ptr<osg::GraphicsContext> gc = createTestContext(Width, Height);
     if (!gc)
         return {};
     camera->setGraphicsContext(gc);
@@ -127,7 +104,7 @@ Frame render(osg::Node* scene, Culling culling,
     camera->setViewMatrixAsLookAt(osg::Vec3d(0, -30, 5), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 0, 1));
     camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
     camera->setCullingMode(camera->getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
-    osg::ref_ptr<Capture> capture = new Capture;
+    osg::ref_ptr<CaptureImage> capture = new CaptureImage(Width, Height);
     camera->setFinalDrawCallback(capture);
     if (culling == Culling::CullVisitor)
         osgVis::CullVisitor::installOn(viewer, "frustum");

@@ -21,4 +21,24 @@ osg::ref_ptr<osg::Geometry> makeBox(const osg::Vec3& min, const osg::Vec3& max, 
     box->getOrCreateStateSet()->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
     return box;
 }
+
+osg::ref_ptr<osg::GraphicsContext> createTestContext(unsigned width, unsigned height)
+{
+    osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
+    traits->readDISPLAY();
+    traits->width = int(width);
+    traits->height = int(height);
+    traits->red = traits->green = traits->blue = traits->alpha = 8;
+    traits->depth = 24;
+    traits->windowDecoration = false;
+    traits->doubleBuffer = true;
+    traits->pbuffer = true;
+    osg::ref_ptr<osg::GraphicsContext> gc = osg::GraphicsContext::createGraphicsContext(traits);
+    if (!gc)
+    {
+        traits->pbuffer = false; // some GLX servers lack pbuffers: a small window does as well
+        gc = osg::GraphicsContext::createGraphicsContext(traits);
+    }
+    return gc;
+}
 } // namespace osgVis::test

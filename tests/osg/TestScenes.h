@@ -1,6 +1,9 @@
 #pragma once
 // Small hand-built geometry for the adapter tests.
+#include <osg/Camera>
 #include <osg/Geometry>
+#include <osg/GraphicsContext>
+#include <osg/Image>
 #include <osg/Vec3>
 #include <osg/Vec4>
 
@@ -9,4 +12,20 @@ namespace osgVis::test
 // Axis-aligned box as 12 indexed triangles, one flat colour, lighting off.
 osg::ref_ptr<osg::Geometry> makeBox(const osg::Vec3& min, const osg::Vec3& max,
                                     const osg::Vec4& colour = osg::Vec4(1, 1, 1, 1));
+
+// An offscreen RGBA8 context with a 24-bit depth buffer, double-buffered: a pbuffer, or a small
+// undecorated window where the GLX server has no pbuffers. Null without a display.
+osg::ref_ptr<osg::GraphicsContext> createTestContext(unsigned width, unsigned height);
+
+// A camera's final-draw callback reading its colour buffer (width × height RGBA) into `image`.
+struct CaptureImage : public osg::Camera::DrawCallback
+{
+    CaptureImage(unsigned w, unsigned h) : width(w), height(h) {}
+    unsigned width, height;
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    void operator()(osg::RenderInfo&) const override
+    {
+        image->readPixels(0, 0, int(width), int(height), GL_RGBA, GL_UNSIGNED_BYTE);
+    }
+};
 } // namespace osgVis::test

@@ -21,6 +21,8 @@
 #include <algorithm>
 #include <array>
 
+using osgVis::test::CaptureImage;
+using osgVis::test::createTestContext;
 using osgVis::test::makeBox;
 
 namespace
@@ -43,31 +45,6 @@ osg::ref_ptr<osg::Group> content(osg::Group* group)
     return group;
 }
 
-struct Capture : public osg::Camera::DrawCallback
-{
-    osg::ref_ptr<osg::Image> image = new osg::Image;
-    void operator()(osg::RenderInfo&) const override { image->readPixels(0, 0, Width, Height, GL_RGBA, GL_UNSIGNED_BYTE); }
-};
-
-osg::ref_ptr<osg::GraphicsContext> createContext()
-{
-    osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
-    traits->readDISPLAY();
-    traits->width = Width;
-    traits->height = Height;
-    traits->red = traits->green = traits->blue = traits->alpha = 8;
-    traits->depth = 24;
-    traits->windowDecoration = false;
-    traits->doubleBuffer = true;
-    traits->pbuffer = true;
-    osg::ref_ptr<osg::GraphicsContext> gc = osg::GraphicsContext::createGraphicsContext(traits);
-    if (!gc)
-    {
-        traits->pbuffer = false;
-        gc = osg::GraphicsContext::createGraphicsContext(traits);
-    }
-    return gc;
-}
 
 // The views move for MovingFrames frames, then hold still: the worker's last region then surely
 // holds them however slowly it runs (sanitizers), so the last frame must be answered from it.
@@ -91,12 +68,12 @@ Result render(osg::Node* scene, osgViewer::ViewerBase::ThreadingModel threading)
 {
     osgViewer::CompositeViewer viewer;
     viewer.setThreadingModel(threading);
-    std::array<osg::ref_ptr<Capture>, 2> captures;
+    std::array<osg::ref_ptr<CaptureImage>, 2> captures;
     for (unsigned v = 0; v < 2; ++v)
     {
         osg::ref_ptr<osgViewer::View> view = new osgViewer::View;
         osg::Camera* camera = view->getCamera();
-        osg::ref_ptr<osg::GraphicsContext> gc = createContext();
+        osg::ref_ptr<osg::GraphicsContext> gc = createTestContext(Width, Height);
         if (!gc)
             return {};
         camera->setGraphicsContext(gc);
@@ -109,7 +86,7 @@ Result render(osg::Node* scene, osgViewer::ViewerBase::ThreadingModel threading)
         camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
         camera->setCullingMode(camera->getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
         camera->getStats()->collectStats("rendering", true);
-        captures[v] = new Capture;
+        captures[v] = new CaptureImage(Width, Height);
         camera->setFinalDrawCallback(captures[v]);
         view->setSceneData(scene);
         viewer.addView(view);

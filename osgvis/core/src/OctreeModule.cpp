@@ -109,6 +109,7 @@ struct OctreeModule::Impl
     bool depthSeparated(const OccluderPolygon& polygon, const Aabb& box) const;
     void chooseOccluders(const View& view, std::uint32_t k);
     void chooseRegionOccluders(const ViewRegion& region, std::uint32_t k);
+    template <class Usable> void chooseBest(std::uint32_t k, Usable usable);
     void rank(std::uint32_t o, double metric, std::uint32_t k);
     void activateRanked();
     void beginQuery(const OctreeOptions& options, const Vec3& center, const Vec3& halfExtent);
@@ -241,35 +242,36 @@ bool OctreeModule::Impl::fusedHidden(const Aabb& box, const std::vector<std::uin
 void OctreeModule::Impl::chooseOccluders(const View& view, std::uint32_t k)
 {
     const Plane& nearPlane = view.frustum.plane(Frustum::NEAR);
-    ranked.clear();
-    for (std::uint32_t o : selector.potentialOccluders(selector.leafOf(eye)))
-    {
-        const OccluderPolygon& polygon = polygons[o];
-        const double metric = areaAngle(polygon, eye);
-        if (metric < threshold || (ranked.size() == k && metric <= ranked.back().first))
-            continue;
-        const bool beyondNear = std::all_of(polygon.vertices.begin(), polygon.vertices.end(),
-                                            [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; });
-        if (!beyondNear || view.frustum.classify(polygonBounds[o]) == Containment::Outside)
-            continue;
-        rank(o, metric, k);
-    }
-    activateRanked();
+    chooseBest(k,
+               [&](std::uint32_t o)
+               {
+                   const OccluderPolygon& polygon = polygons[o];
+                   const bool beyondNear = std::all_of(polygon.vertices.begin(), polygon.vertices.end(),
+                                                       [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; });
+                   return beyondNear && view.frustum.classify(polygonBounds[o]) != Containment::Outside;
+               });
 }
 
 // Every direction counts, so no frustum test; a polygon is kept only when no eye of the region
 // comes within the near plane's reach of its plane (a view may clip it wherever it looks).
 void OctreeModule::Impl::chooseRegionOccluders(const ViewRegion& region, std::uint32_t k)
 {
+    chooseBest(k,
+               [&](std::uint32_t o)
+               {
+                   const Plane& plane = polygons[o].plane;
+                   return std::abs(plane.distance(eye)) - eyes.spread(plane.normal) > region.maxNearReach;
+               });
+}
+
+// The k potential occluders of the eye's cell with the largest area-angle that `usable` accepts.
+template <class Usable> void OctreeModule::Impl::chooseBest(std::uint32_t k, Usable usable)
+{
     ranked.clear();
     for (std::uint32_t o : selector.potentialOccluders(selector.leafOf(eye)))
     {
-        const OccluderPolygon& polygon = polygons[o];
-        const double metric = areaAngle(polygon, eye);
-        if (metric < threshold || (ranked.size() == k && metric <= ranked.back().first))
-            continue;
-        const double clearance = std::abs(polygon.plane.distance(eye)) - eyes.spread(polygon.plane.normal);
-        if (!(clearance > region.maxNearReach))
+        const double metric = areaAngle(polygons[o], eye);
+        if (metric < threshold || (ranked.size() == k && metric <= ranked.back().first) || !usable(o))
             continue;
         rank(o, metric, k);
     }
