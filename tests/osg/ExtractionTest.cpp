@@ -314,7 +314,9 @@ namespace
 std::vector<std::uint32_t> objectFlags(osg::Node& root)
 {
     std::vector<std::uint32_t> flags;
-    for (const auto& object : osgVis::extractScene(root)->scene.objects)
+    // note: held here; a range-for over the temporary's member would outlive the extraction.
+    const osg::ref_ptr<osgVis::ExtractedScene> scene = osgVis::extractScene(root);
+    for (const auto& object : scene->scene.objects)
         flags.push_back(object.flags);
     return flags;
 }
