@@ -15,6 +15,7 @@
 #include <random>
 #include <sstream>
 #include <thread>
+#include <type_traits>
 
 using namespace osgVis::core;
 using namespace osgVis::test;
@@ -54,13 +55,22 @@ ViewRegion regionAround(const Vec3& center, const Vec3& halfExtent)
     return region;
 }
 
-VisibleSet regionAnswer(const std::string& modes, const Scene& scene, const ViewRegion& region)
+// A fresh chain's answer for a region (ViewRegion) or a single view (View).
+template <class Query> VisibleSet chainAnswer(const std::string& modes, const Scene& scene, const Query& query)
 {
     ModuleChain chain = createChain(modes);
     chain.setScene(scene);
     VisibleSet visible;
-    chain.cullRegion(region, visible);
+    if constexpr (std::is_same_v<Query, ViewRegion>)
+        chain.cullRegion(query, visible);
+    else
+        chain.cull(query, visible);
     return visible;
+}
+
+VisibleSet regionAnswer(const std::string& modes, const Scene& scene, const ViewRegion& region)
+{
+    return chainAnswer(modes, scene, region);
 }
 
 // Objects seen from eyes of the region (its corners, centre and random points) that the answer lacks.
@@ -204,11 +214,7 @@ View streetView(double y, double yawDegrees = 0.0)
 
 VisibleSet syncAnswer(const std::string& modes, const Scene& scene, const View& view)
 {
-    ModuleChain chain = createChain(modes);
-    chain.setScene(scene);
-    VisibleSet visible;
-    chain.cull(view, visible);
-    return visible;
+    return chainAnswer(modes, scene, view);
 }
 
 bool isSubset(const VisibleSet& a, const VisibleSet& b)

@@ -25,7 +25,7 @@
 #include <gtest/gtest.h>
 
 using osgVis::test::CaptureImage;
-using osgVis::test::createTestContext;
+using osgVis::test::setUpCapturingCamera;
 using osgVis::test::makeBox;
 
 namespace
@@ -91,21 +91,11 @@ Frame render(osg::Node* scene, Culling culling,
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(threading);
     osg::Camera* camera = viewer.getCamera();
-    osg::ref_ptr<osg::GraphicsContext> gc = createTestContext(Width, Height);
-    if (!gc)
+    osg::ref_ptr<CaptureImage> capture = setUpCapturingCamera(*camera, Width, Height);
+    if (!capture)
         return {};
-    camera->setGraphicsContext(gc);
-    camera->setViewport(0, 0, Width, Height);
-    const GLenum buffer = gc->getTraits()->doubleBuffer ? GL_BACK : GL_FRONT;
-    camera->setDrawBuffer(buffer);
-    camera->setReadBuffer(buffer);
-    camera->setClearColor(osg::Vec4(0, 0, 0, 1));
     camera->setProjectionMatrixAsPerspective(60.0, double(Width) / Height, 1.0, 200.0);
     camera->setViewMatrixAsLookAt(osg::Vec3d(0, -30, 5), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 0, 1));
-    camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
-    camera->setCullingMode(camera->getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
-    osg::ref_ptr<CaptureImage> capture = new CaptureImage(Width, Height);
-    camera->setFinalDrawCallback(capture);
     if (culling == Culling::CullVisitor)
         osgVis::CullVisitor::installOn(viewer, "frustum");
     viewer.setSceneData(scene);

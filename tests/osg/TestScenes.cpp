@@ -41,4 +41,22 @@ osg::ref_ptr<osg::GraphicsContext> createTestContext(unsigned width, unsigned he
     }
     return gc;
 }
+
+osg::ref_ptr<CaptureImage> setUpCapturingCamera(osg::Camera& camera, unsigned width, unsigned height)
+{
+    osg::ref_ptr<osg::GraphicsContext> gc = createTestContext(width, height);
+    if (!gc)
+        return nullptr;
+    camera.setGraphicsContext(gc);
+    camera.setViewport(0, 0, int(width), int(height));
+    const GLenum buffer = gc->getTraits()->doubleBuffer ? GL_BACK : GL_FRONT;
+    camera.setDrawBuffer(buffer);
+    camera.setReadBuffer(buffer);
+    camera.setClearColor(osg::Vec4(0, 0, 0, 1));
+    camera.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+    camera.setCullingMode(camera.getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
+    osg::ref_ptr<CaptureImage> capture = new CaptureImage(width, height);
+    camera.setFinalDrawCallback(capture);
+    return capture;
+}
 } // namespace osgVis::test

@@ -28,4 +28,10 @@ struct CaptureImage : public osg::Camera::DrawCallback
         image->readPixels(0, 0, int(width), int(height), GL_RGBA, GL_UNSIGNED_BYTE);
     }
 };
+
+// Gives `camera` an offscreen context of width × height (createTestContext), the whole viewport,
+// the context's colour buffer to draw and read, a black clear colour, fixed near/far, no
+// small-feature culling, and a CaptureImage as its final-draw callback, which it returns. Null
+// (the camera untouched) without a display.
+osg::ref_ptr<CaptureImage> setUpCapturingCamera(osg::Camera& camera, unsigned width, unsigned height);
 } // namespace osgVis::test

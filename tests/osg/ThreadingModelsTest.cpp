@@ -22,7 +22,7 @@
 #include <array>
 
 using osgVis::test::CaptureImage;
-using osgVis::test::createTestContext;
+using osgVis::test::setUpCapturingCamera;
 using osgVis::test::makeBox;
 
 namespace
@@ -73,21 +73,11 @@ Result render(osg::Node* scene, osgViewer::ViewerBase::ThreadingModel threading)
     {
         osg::ref_ptr<osgViewer::View> view = new osgViewer::View;
         osg::Camera* camera = view->getCamera();
-        osg::ref_ptr<osg::GraphicsContext> gc = createTestContext(Width, Height);
-        if (!gc)
+        captures[v] = setUpCapturingCamera(*camera, Width, Height);
+        if (!captures[v])
             return {};
-        camera->setGraphicsContext(gc);
-        camera->setViewport(0, 0, Width, Height);
-        const GLenum buffer = gc->getTraits()->doubleBuffer ? GL_BACK : GL_FRONT;
-        camera->setDrawBuffer(buffer);
-        camera->setReadBuffer(buffer);
-        camera->setClearColor(osg::Vec4(0, 0, 0, 1));
         camera->setProjectionMatrixAsPerspective(60.0, double(Width) / Height, 0.1, 200.0);
-        camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
-        camera->setCullingMode(camera->getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
         camera->getStats()->collectStats("rendering", true);
-        captures[v] = new CaptureImage(Width, Height);
-        camera->setFinalDrawCallback(captures[v]);
         view->setSceneData(scene);
         viewer.addView(view);
     }
