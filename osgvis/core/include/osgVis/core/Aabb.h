@@ -1,5 +1,6 @@
 #pragma once
-// Axis-aligned bounding box. An empty box has min > max and contains nothing.
+/// @file
+/// Axis-aligned bounding box. An empty box has min > max and contains nothing.
 #include <osgVis/core/Math.h>
 
 #include <limits>
@@ -38,9 +39,9 @@ struct Aabb
         return !(b.min.x > max.x || b.max.x < min.x || b.min.y > max.y || b.max.y < min.y || b.min.z > max.z ||
                  b.max.z < min.z);
     }
-    // Corner i: bit 0 selects x max, bit 1 y max, bit 2 z max.
+    /// Corner i: bit 0 selects x max, bit 1 y max, bit 2 z max.
     Vec3 corner(int i) const { return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z}; }
-    // True when all six coordinates are finite (NaN or infinite input bounds are rejected upstream).
+    /// True when all six coordinates are finite (NaN or infinite input bounds are rejected upstream).
     bool finite() const;
 };
 } // namespace osgVis::core

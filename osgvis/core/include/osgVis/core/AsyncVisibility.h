@@ -1,14 +1,15 @@
 #pragma once
-// Asynchronous visibility: a worker thread computes, with its own module chain, the visible set of
-// a region of viewpoints (ViewRegion: a box of eyes along the eye's predicted path, every
-// direction); the cull thread only intersects a region's answer with its view frustum, for as long
-// as the eye stays inside the region. It predicts the eye from its last step and asks for the next
-// region while the current one still holds, so the answer is usually ready before the eye gets
-// there. When no region holds a view (a turn the prediction missed, a jump, a new scene) cull()
-// says so and the caller culls that frame itself: a stale answer is never used.
-//
-// Threads: one worker per object. cull(), setScene() and sceneReplaced() belong to one thread at
-// a time (the view's cull thread); statistics() may be called from anywhere.
+/// @file
+/// Asynchronous visibility: a worker thread computes, with its own module chain, the visible set of
+/// a region of viewpoints (ViewRegion: a box of eyes along the eye's predicted path, every
+/// direction); the cull thread only intersects a region's answer with its view frustum, for as long
+/// as the eye stays inside the region. It predicts the eye from its last step and asks for the next
+/// region while the current one still holds, so the answer is usually ready before the eye gets
+/// there. When no region holds a view (a turn the prediction missed, a jump, a new scene) cull()
+/// says so and the caller culls that frame itself: a stale answer is never used.
+///
+/// Threads: one worker per object. cull(), setScene() and sceneReplaced() belong to one thread at
+/// a time (the view's cull thread); statistics() may be called from anywhere.
 #include <osgVis/core/ModuleChain.h>
 #include <osgVis/core/ViewRegion.h>
 
@@ -26,44 +27,44 @@ namespace osgVis::core
 {
 struct AsyncOptions
 {
-    std::uint32_t lookAheadFrames = 4; // a region covers the path the eye takes in this many frames
-    double slack = 0.0;                // grows a region's box every way (world units); 0: 1/10000 of the scene's diagonal
+    std::uint32_t lookAheadFrames = 4; ///< a region covers the path the eye takes in this many frames
+    double slack = 0.0;                ///< grows a region's box every way (world units); 0: 1/10000 of the scene's diagonal
 };
 
 struct AsyncStatistics
 {
-    std::uint64_t regionsComputed = 0; // by the worker
-    std::uint64_t answered = 0;        // cull() calls answered from a region
-    std::uint64_t missed = 0;          // cull() calls no region held (the caller culled itself)
-    double lastRegionMs = 0.0;         // worker time of the latest region
-    std::size_t lastRegionObjects = 0; // objects in the latest region's answer
+    std::uint64_t regionsComputed = 0; ///< by the worker
+    std::uint64_t answered = 0;        ///< cull() calls answered from a region
+    std::uint64_t missed = 0;          ///< cull() calls no region held (the caller culled itself)
+    double lastRegionMs = 0.0;         ///< worker time of the latest region
+    std::size_t lastRegionObjects = 0; ///< objects in the latest region's answer
 };
 
 class AsyncVisibility
 {
 public:
-    // `modes` as createChain takes them (throws UnknownModeError). Starts the worker thread.
+    /// `modes` as createChain takes them (throws UnknownModeError). Starts the worker thread.
     explicit AsyncVisibility(const std::string& modes, const AsyncOptions& options = {});
-    // Stops the worker, after the region or scene update it is busy with.
+    /// Stops the worker, after the region or scene update it is busy with.
     ~AsyncVisibility();
     AsyncVisibility(const AsyncVisibility&) = delete;
     AsyncVisibility& operator=(const AsyncVisibility&) = delete;
 
-    // The chain answers region queries (else cull() always answers false).
+    /// The chain answers region queries (else cull() always answers false).
     bool supported() const { return _supported; }
 
-    // Scene updates, applied by the worker in order. Regions of earlier scenes stop holding at
-    // once. The pointer keeps the scene alive while the worker uses it.
+    /// Scene updates, applied by the worker in order. Regions of earlier scenes stop holding at
+    /// once. The pointer keeps the scene alive while the worker uses it.
     void setScene(std::shared_ptr<const Scene> scene);
     void sceneReplaced(std::shared_ptr<const Scene> scene, std::vector<SceneChange> changes);
 
-    // True: `visible` is the answer of a region computed for the current scene that holds `view`,
-    // less objects wholly outside the view frustum (plus always-visible ones). False: no region
-    // holds the view; `visible` is untouched. Never waits for the worker.
+    /// True: `visible` is the answer of a region computed for the current scene that holds `view`,
+    /// less objects wholly outside the view frustum (plus always-visible ones). False: no region
+    /// holds the view; `visible` is untouched. Never waits for the worker.
     bool cull(const View& view, VisibleSet& visible);
 
     AsyncStatistics statistics() const;
-    // Blocks until the worker has nothing queued or running (tests and tools; never the cull thread).
+    /// Blocks until the worker has nothing queued or running (tests and tools; never the cull thread).
     void waitIdle();
 
 private:
@@ -92,23 +93,23 @@ private:
     AsyncOptions _options;
     bool _supported = false;
 
-    // Cull-thread state.
+    /// Cull-thread state.
     std::shared_ptr<const Scene> _scene;
     double _slack = 0.0, _maxPath = 0.0;
     std::optional<Vec3> _lastEye;
-    Vec3 _step{0.0};                      // the eye's latest move per frame
-    std::optional<ViewRegion> _requested; // the latest region asked for
+    Vec3 _step{0.0};                      ///< the eye's latest move per frame
+    std::optional<ViewRegion> _requested; ///< the latest region asked for
 
-    // Shared with the worker.
+    /// Shared with the worker.
     mutable std::mutex _mutex;
     std::condition_variable _wake, _idle;
     std::deque<SceneJob> _sceneJobs;
     std::optional<Request> _pending;
-    std::vector<std::shared_ptr<const Answer>> _answers; // newest first, at most two
+    std::vector<std::shared_ptr<const Answer>> _answers; ///< newest first, at most two
     bool _busy = false, _stop = false;
     AsyncStatistics _statistics;
 
-    // Worker-only.
+    /// Worker-only.
     ModuleChain _chain;
     std::shared_ptr<const Scene> _workerScene;
     std::thread _worker;

@@ -1,5 +1,6 @@
 #pragma once
-// A rectangle lying in an axis-aligned plane (a cell face, a portal, an opaque axial face).
+/// @file
+/// A rectangle lying in an axis-aligned plane (a cell face, a portal, an opaque axial face).
 #include <osgVis/core/Aabb.h>
 
 #include <cstdint>
@@ -8,16 +9,16 @@ namespace osgVis::core
 {
 struct AxialRect
 {
-    std::uint8_t axis = 0;   // normal axis: 0 x, 1 y, 2 z
-    double coordinate = 0.0; // position of the plane along `axis`
-    // Ranges along the two in-plane axes u = (axis+1)%3 and v = (axis+2)%3.
+    std::uint8_t axis = 0;   ///< normal axis: 0 x, 1 y, 2 z
+    double coordinate = 0.0; ///< position of the plane along `axis`
+    /// Ranges along the two in-plane axes u = (axis+1)%3 and v = (axis+2)%3.
     double uMin = 0.0, uMax = 0.0, vMin = 0.0, vMax = 0.0;
 
     static int uAxis(int axis) { return (axis + 1) % 3; }
     static int vAxis(int axis) { return (axis + 2) % 3; }
     double area() const { return (uMax - uMin) * (vMax - vMin); }
     bool empty() const { return !(uMax > uMin) || !(vMax > vMin); }
-    // Corner i (0..3) counter-clockwise around +axis: (uMin,vMin), (uMax,vMin), (uMax,vMax), (uMin,vMax).
+    /// Corner i (0..3) counter-clockwise around +axis: (uMin,vMin), (uMax,vMin), (uMax,vMax), (uMin,vMax).
     Vec3 corner(int i) const
     {
         Vec3 p{0.0};

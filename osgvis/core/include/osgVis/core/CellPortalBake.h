@@ -1,7 +1,8 @@
 #pragma once
-// The cell-portal bake: subdivision, then per source cell a depth-first search over portal
-// sequences that keeps a sequence while a sightline can stab it (the stab tree), cell-to-cell
-// visibility, and cell-to-object visibility from the funnel beyond each sequence.
+/// @file
+/// The cell-portal bake: subdivision, then per source cell a depth-first search over portal
+/// sequences that keeps a sequence while a sightline can stab it (the stab tree), cell-to-cell
+/// visibility, and cell-to-object visibility from the funnel beyond each sequence.
 #include <osgVis/core/CellPortalData.h>
 #include <osgVis/core/CellSubdivision.h>
 
@@ -12,15 +13,15 @@ namespace osgVis::core
 struct BakeOptions
 {
     SubdivisionOptions subdivision;
-    // Stab-tree nodes one source cell may grow; past it every cell still reachable counts as
-    // visible (conservative) and the cell is reported in BakeStatistics::budgetExceededCells.
+    /// Stab-tree nodes one source cell may grow; past it every cell still reachable counts as
+    /// visible (conservative) and the cell is reported in BakeStatistics::budgetExceededCells.
     std::uint32_t stabBudget = 50000;
-    // Worker threads for the per-cell searches (0: all cores). Results do not depend on it.
+    /// Worker threads for the per-cell searches (0: all cores). Results do not depend on it.
     unsigned threads = 0;
 };
 
-// Called with the number of source cells done so far and the total, from worker threads but never
-// two calls at once.
+/// Called with the number of source cells done so far and the total, from worker threads but never
+/// two calls at once.
 using BakeProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options = {}, const BakeProgress& progress = {});

@@ -1,7 +1,8 @@
 #pragma once
-// Everything a cell-portal bake produces and a `.pvs` file stores: the cells and portals, per
-// source cell the stab tree (portal sequences a sightline can pass), the cells and objects visible
-// from anywhere in it, and a fingerprint of the model it was baked for.
+/// @file
+/// Everything a cell-portal bake produces and a `.pvs` file stores: the cells and portals, per
+/// source cell the stab tree (portal sequences a sightline can pass), the cells and objects visible
+/// from anywhere in it, and a fingerprint of the model it was baked for.
 #include <osgVis/core/CellGraph.h>
 #include <osgVis/core/VisibleSet.h>
 
@@ -12,30 +13,30 @@ namespace osgVis::core
 {
 constexpr std::uint32_t NoStabParent = ~std::uint32_t(0);
 
-// One portal sequence of a stab tree, stored in depth-first preorder: the sequence is the chain of
-// portals from the tree's root down to this node. Its subtree is the nodes [index+1, subtreeEnd).
+/// One portal sequence of a stab tree, stored in depth-first preorder: the sequence is the chain of
+/// portals from the tree's root down to this node. Its subtree is the nodes [index+1, subtreeEnd).
 struct StabNode
 {
-    std::uint32_t portal = 0;     // index into CellGraph::portals, crossed into `cell`
-    std::uint32_t cell = 0;       // the cell reached through this sequence
+    std::uint32_t portal = 0;     ///< index into CellGraph::portals, crossed into `cell`
+    std::uint32_t cell = 0;       ///< the cell reached through this sequence
     std::uint32_t parent = NoStabParent;
-    std::uint32_t subtreeEnd = 0; // index one past the last node of this node's subtree
+    std::uint32_t subtreeEnd = 0; ///< index one past the last node of this node's subtree
 };
 
 struct SourceCellVisibility
 {
     std::vector<StabNode> stabTree;
-    // The search gave up past its budget; every cell reachable from here then counts as visible
-    // and the stab tree is incomplete (eye-to-cell falls back to cellToObject for this cell).
+    /// The search gave up past its budget; every cell reachable from here then counts as visible
+    /// and the stab tree is incomplete (eye-to-cell falls back to cellToObject for this cell).
     bool budgetExceeded = false;
-    VisibleSet cellToCell;   // capacity = cell count; includes the cell itself
-    VisibleSet cellToObject; // capacity = object count: the cell's PVS
+    VisibleSet cellToCell;   ///< capacity = cell count; includes the cell itself
+    VisibleSet cellToObject; ///< capacity = object count: the cell's PVS
 };
 
 struct BakeStatistics
 {
     std::uint32_t cells = 0, portals = 0;
-    std::uint32_t budgetExceededCells = 0; // source cells whose stab-tree search hit its budget
+    std::uint32_t budgetExceededCells = 0; ///< source cells whose stab-tree search hit its budget
     std::uint64_t stabNodes = 0;
     double averageVisibleCells = 0.0, averagePvsObjects = 0.0;
     double seconds = 0.0;
@@ -43,15 +44,15 @@ struct BakeStatistics
 
 struct CellPortalData
 {
-    std::uint64_t fingerprint = 0; // sceneFingerprint() of the model it was baked for
+    std::uint64_t fingerprint = 0; ///< sceneFingerprint() of the model it was baked for
     std::uint32_t objectCount = 0;
     CellGraph graph;
-    std::vector<SourceCellVisibility> sources; // one per cell
+    std::vector<SourceCellVisibility> sources; ///< one per cell
     BakeStatistics statistics;
 };
 
-// Identifies a model for its baked data: FNV-1a 64 over the object count and, per object, its
-// bounds, triangle count and static flags (DYNAMIC, TRANSPARENT, ALWAYS_VISIBLE, NO_AUTO_OCCLUDER,
-// CULL_*). Triangles are not hashed, so an extraction without them fingerprints the same.
+/// Identifies a model for its baked data: FNV-1a 64 over the object count and, per object, its
+/// bounds, triangle count and static flags (DYNAMIC, TRANSPARENT, ALWAYS_VISIBLE, NO_AUTO_OCCLUDER,
+/// CULL_*). Triangles are not hashed, so an extraction without them fingerprints the same.
 std::uint64_t sceneFingerprint(const Scene& scene);
 } // namespace osgVis::core

@@ -1,13 +1,14 @@
 #pragma once
-// Cell-and-portal visibility after Teller & Séquin, "Visibility Preprocessing for Interactive
-// Walkthroughs" / "Visibility Computations in Polyhedral Three-Dimensional Environments". Baked
-// data (a `.pvs` file, or a bake made on the spot in setScene when none is registered for the
-// scene's fingerprint) gives each cell its stab tree and PVS; at run time the eye's cell is found,
-// its stab tree walked with a small LP per portal sequence (eye-to-cell), and only PVS objects
-// that a sightline through the eye can reach are kept (eye-to-object).
-// Modes: "cellportal" (eye-to-object) and, for the paper's progressive table, "cellportal-cells"
-// (objects in cells visible from the eye's cell), "cellportal-pvs" (the eye cell's PVS) and
-// "cellportal-eyecells" (objects in cells the eye sees).
+/// @file
+/// Cell-and-portal visibility after Teller & Séquin, "Visibility Preprocessing for Interactive
+/// Walkthroughs" / "Visibility Computations in Polyhedral Three-Dimensional Environments". Baked
+/// data (a `.pvs` file, or a bake made on the spot in setScene when none is registered for the
+/// scene's fingerprint) gives each cell its stab tree and PVS; at run time the eye's cell is found,
+/// its stab tree walked with a small LP per portal sequence (eye-to-cell), and only PVS objects
+/// that a sightline through the eye can reach are kept (eye-to-object).
+/// Modes: "cellportal" (eye-to-object) and, for the paper's progressive table, "cellportal-cells"
+/// (objects in cells visible from the eye's cell), "cellportal-pvs" (the eye cell's PVS) and
+/// "cellportal-eyecells" (objects in cells the eye sees).
 #include <osgVis/core/CellPortalBake.h>
 #include <osgVis/core/VisibilityModule.h>
 
@@ -31,17 +32,17 @@ public:
     const char* name() const override;
     void setScene(const Scene& scene) override;
     void cull(const View& view, VisibleSet& visible) override;
-    // Regions: the union of the PVS of every cell the region's eye box meets (the cell-to-object
-    // stage; no stab tree is walked, as sightlines through a box of eyes are not one LP).
+    /// Regions: the union of the PVS of every cell the region's eye box meets (the cell-to-object
+    /// stage; no stab tree is walked, as sightlines through a box of eyes are not one LP).
     bool supportsRegions() const override { return true; }
     void cullRegion(const ViewRegion& region, VisibleSet& visible) override;
     void setDebugRecord(DebugRecord* record) override;
 
-    // Use these data for the next setScene instead of looking them up (they must be baked for that
-    // scene: a fingerprint mismatch makes the module bake afresh).
+    /// Use these data for the next setScene instead of looking them up (they must be baked for that
+    /// scene: a fingerprint mismatch makes the module bake afresh).
     void setBakedData(std::shared_ptr<const CellPortalData> data);
     std::shared_ptr<const CellPortalData> bakedData() const;
-    // True when the last setScene baked on the spot (no registered data matched the scene).
+    /// True when the last setScene baked on the spot (no registered data matched the scene).
     bool bakedOnTheSpot() const;
 
 private:
@@ -49,8 +50,8 @@ private:
     std::unique_ptr<Impl> _impl;
 };
 
-// Process-wide store of baked data by scene fingerprint: the `.pvs` reader registers what it loaded
-// so that any CellPortalModule later given that scene uses it. Thread-safe.
+/// Process-wide store of baked data by scene fingerprint: the `.pvs` reader registers what it loaded
+/// so that any CellPortalModule later given that scene uses it. Thread-safe.
 void registerBakedCellPortalData(std::shared_ptr<const CellPortalData> data);
 std::shared_ptr<const CellPortalData> findBakedCellPortalData(std::uint64_t fingerprint);
 } // namespace osgVis::core

@@ -1,7 +1,8 @@
 #pragma once
-// What a module decided in its last query, for debug views (the viewer's top-down map): tree
-// nodes with their state, the occluders it used and the cell the eye was in. Filled only on
-// request, so queries pay nothing for it otherwise.
+/// @file
+/// What a module decided in its last query, for debug views (the viewer's top-down map): tree
+/// nodes with their state, the occluders it used and the cell the eye was in. Filled only on
+/// request, so queries pay nothing for it otherwise.
 #include <osgVis/core/Aabb.h>
 
 #include <cstdint>
@@ -12,8 +13,8 @@ namespace osgVis::core
 enum class NodeState : std::uint8_t
 {
     OutsideFrustum,
-    Visible, // visible or partially occluded: drawn
-    Invisible // occluded
+    Visible, ///< visible or partially occluded: drawn
+    Invisible ///< occluded
 };
 
 struct DebugRecord
@@ -24,9 +25,9 @@ struct DebugRecord
         NodeState state = NodeState::Visible;
         std::uint32_t depth = 0;
     };
-    std::vector<Node> nodes;                        // the nodes where traversal stopped
-    std::vector<std::vector<Vec3>> activeOccluders; // polygons used as occluders (world space)
-    Aabb eyeCell;                                   // empty when the module has none
+    std::vector<Node> nodes;                        ///< the nodes where traversal stopped
+    std::vector<std::vector<Vec3>> activeOccluders; ///< polygons used as occluders (world space)
+    Aabb eyeCell;                                   ///< empty when the module has none
 
     void clear()
     {

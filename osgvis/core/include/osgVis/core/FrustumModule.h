@@ -1,5 +1,6 @@
 #pragma once
-// Hierarchical view-frustum culling over a kd-tree: the baseline every occlusion module must beat.
+/// @file
+/// Hierarchical view-frustum culling over a kd-tree: the baseline every occlusion module must beat.
 #include <osgVis/core/KdTree.h>
 #include <osgVis/core/VisibilityModule.h>
 
@@ -10,16 +11,16 @@ class FrustumModule : public VisibilityModule
 public:
     const char* name() const override { return "frustum"; }
     void setScene(const Scene& scene) override;
-    // Never culls a visible object: keeps every object whose bounds are not entirely outside one
-    // frustum plane.
+    /// Never culls a visible object: keeps every object whose bounds are not entirely outside one
+    /// frustum plane.
     void cull(const View& view, VisibleSet& visible) override;
-    // A region looks in every direction: the frustum stage keeps everything (the renderer
-    // intersects the region's answer with each view's frustum).
+    /// A region looks in every direction: the frustum stage keeps everything (the renderer
+    /// intersects the region's answer with each view's frustum).
     bool supportsRegions() const override { return true; }
     void cullRegion(const ViewRegion&, VisibleSet&) override {}
 
 private:
     KdTree _tree;
-    std::vector<std::uint32_t> _stack; // reused per query: no allocation after warm-up
+    std::vector<std::uint32_t> _stack; ///< reused per query: no allocation after warm-up
 };
 } // namespace osgVis::core

@@ -1,17 +1,18 @@
 #pragma once
-// Online occlusion culling with occlusion masks after Wang, Agarwal & Har-Peled, "An On-line
-// Occlusion-Culling Algorithm for Fast Walkthrough in Urban Areas": no preprocessing, no stated
-// occluders. On a *critical frame* the module picks R occluders near the eye from a kd-tree by
-// coverage importance, rasterizes them in software into a conservative max-depth mask, builds the
-// mask's pyramid and marks every kd-tree node or object behind it with the time stamp
-// t_c + δ/V: hidden for every eye within δ of the critical eye, δ following from the image-space
-// shrinkage Δ and the occluders' minimum distance (docs/mask.md derives the bound at the frame
-// corners). Other frames only read the stamps. Objects may be inserted, moved and deleted
-// during the walk (sceneChanged / sceneReplaced).
-//
-// Modes: "mask" shrinks each occluder group's projection on its own (conservative for every eye in
-// the δ-ball); "mask-approx" shrinks the fused union as the paper does (faster, bounded leaks:
-// approximate); "mask-distance" is "mask" with the plain distance measure for occluder selection.
+/// @file
+/// Online occlusion culling with occlusion masks after Wang, Agarwal & Har-Peled, "An On-line
+/// Occlusion-Culling Algorithm for Fast Walkthrough in Urban Areas": no preprocessing, no stated
+/// occluders. On a *critical frame* the module picks R occluders near the eye from a kd-tree by
+/// coverage importance, rasterizes them in software into a conservative max-depth mask, builds the
+/// mask's pyramid and marks every kd-tree node or object behind it with the time stamp
+/// t_c + δ/V: hidden for every eye within δ of the critical eye, δ following from the image-space
+/// shrinkage Δ and the occluders' minimum distance (docs/mask.md derives the bound at the frame
+/// corners). Other frames only read the stamps. Objects may be inserted, moved and deleted
+/// during the walk (sceneChanged / sceneReplaced).
+///
+/// Modes: "mask" shrinks each occluder group's projection on its own (conservative for every eye in
+/// the δ-ball); "mask-approx" shrinks the fused union as the paper does (faster, bounded leaks:
+/// approximate); "mask-distance" is "mask" with the plain distance measure for occluder selection.
 #include <osgVis/core/MaskKdTree.h>
 #include <osgVis/core/OcclusionMask.h>
 #include <osgVis/core/VisibilityModule.h>
@@ -23,28 +24,28 @@ namespace osgVis::core
 {
 enum class OccluderMeasure
 {
-    CoverageImportance, // φ(ξ) = min over sampled eyes of the δ-ball of coverage × mindist
-    Distance,           // nearest first
+    CoverageImportance, ///< φ(ξ) = min over sampled eyes of the δ-ball of coverage × mindist
+    Distance,           ///< nearest first
 };
 
 enum class MaskShrink
 {
-    PerOccluder, // "mask": conservative
-    FusedUnion,  // "mask-approx": the paper's variant, not conservative
+    PerOccluder, ///< "mask": conservative
+    FusedUnion,  ///< "mask-approx": the paper's variant, not conservative
 };
 
 struct MaskOptions
 {
     MaskShrink shrink = MaskShrink::PerOccluder;
     OccluderMeasure measure = OccluderMeasure::CoverageImportance;
-    double shrinkPixels = 2.0;        // Δ, in frame pixels (the viewport's)
-    std::uint32_t maskDownscale = 4;  // mask = viewport / this (rounded up), at least 16×16
-    std::uint32_t occluders = 64;     // R: occluder objects per critical frame
-    double minOccluderDistance = 0.0; // D: occluders nearer than this to the eye are not used (world
+    double shrinkPixels = 2.0;        ///< Δ, in frame pixels (the viewport's)
+    std::uint32_t maskDownscale = 4;  ///< mask = viewport / this (rounded up), at least 16×16
+    std::uint32_t occluders = 64;     ///< R: occluder objects per critical frame
+    double minOccluderDistance = 0.0; ///< D: occluders nearer than this to the eye are not used (world
                                       // units; the near plane's reach is always added)
-    double maxEyeSpeed = 15.0;        // V, world units per second of walk time
-    std::uint32_t stopObjects = 8;    // ρ: marking stops at nodes with fewer objects and tests them one by one
-    enum class Tree { Auto, Planar, Full } tree = Tree::Auto; // Auto: Planar for flat (2.5-D) scenes
+    double maxEyeSpeed = 15.0;        ///< V, world units per second of walk time
+    std::uint32_t stopObjects = 8;    ///< ρ: marking stops at nodes with fewer objects and tests them one by one
+    enum class Tree { Auto, Planar, Full } tree = Tree::Auto; ///< Auto: Planar for flat (2.5-D) scenes
     std::uint32_t maxLeafObjects = 4;
 };
 
@@ -65,41 +66,41 @@ public:
 
     enum class CriticalReason
     {
-        None,          // stamps of an earlier critical frame answered
-        First,         // no mask yet
-        StampExpired,  // walk time passed t_c + δ/V
-        LeftRegion,    // the eye moved farther than δ from the critical eye (faster than V)
-        Turned,        // the view turned: marks hold for the critical frame's orientation only
-        OccluderGone,  // an occluder of the current mask was deleted or moved
-        ViewChanged,   // projection or viewport changed
+        None,          ///< stamps of an earlier critical frame answered
+        First,         ///< no mask yet
+        StampExpired,  ///< walk time passed t_c + δ/V
+        LeftRegion,    ///< the eye moved farther than δ from the critical eye (faster than V)
+        Turned,        ///< the view turned: marks hold for the critical frame's orientation only
+        OccluderGone,  ///< an occluder of the current mask was deleted or moved
+        ViewChanged,   ///< projection or viewport changed
     };
-    // Figures of the last query (for the benchmark's per-step table and the tests).
+    /// Figures of the last query (for the benchmark's per-step table and the tests).
     struct Statistics
     {
         CriticalReason critical = CriticalReason::None;
-        double selectMs = 0.0, rasterizeMs = 0.0, pyramidMs = 0.0, markMs = 0.0; // critical frames
+        double selectMs = 0.0, rasterizeMs = 0.0, pyramidMs = 0.0, markMs = 0.0; ///< critical frames
         std::uint32_t occluderObjects = 0, occluderPolygons = 0, groups = 0;
         std::size_t coveredPixels = 0;
         std::uint32_t maskWidth = 0, maskHeight = 0;
         std::uint32_t nodesTested = 0, nodesMarked = 0, objectsMarked = 0;
-        double delta = 0.0;         // least δ of the current marks (world units)
-        double validUntil = 0.0;    // t_c + δ/V: every mark holds until then
-        double criticalAfter = 0.0; // when half the hidden objects' stamps have run out
-        std::uint32_t culled = 0; // objects this query removed
+        double delta = 0.0;         ///< least δ of the current marks (world units)
+        double validUntil = 0.0;    ///< t_c + δ/V: every mark holds until then
+        double criticalAfter = 0.0; ///< when half the hidden objects' stamps have run out
+        std::uint32_t culled = 0; ///< objects this query removed
     };
     Statistics lastStatistics() const;
-    // The mask of the last critical frame (for the debug view and the tests).
+    /// The mask of the last critical frame (for the debug view and the tests).
     const OcclusionMask& mask() const;
 
 private:
-    // True when the box lies behind the current mask (or out of its view) for every eye within
-    // `delta` of the critical eye (set on success); a box that is covered but not deep enough is
-    // halved up to `splits` times.
+    /// True when the box lies behind the current mask (or out of its view) for every eye within
+    /// `delta` of the critical eye (set on success); a box that is covered but not deep enough is
+    /// halved up to `splits` times.
     bool objectBehindMask(const Aabb& box, int splits, double& delta) const;
-    // The least δ of the occluder groups whose rectangles reach the given mask rectangle.
+    /// The least δ of the occluder groups whose rectangles reach the given mask rectangle.
     double tileDeltaOver(double x0, double y0, double x1, double y1) const;
     void fillTileDeltas(double shift);
-    // The critical frame's marking pass over the kd-tree.
+    /// The critical frame's marking pass over the kd-tree.
     void markHidden(Statistics& stats);
     struct Impl;
     MaskOptions _options;

@@ -1,6 +1,7 @@
 #pragma once
-// Vector types of the core. Geometry runs in double precision (robust plane tests); bulk triangle
-// storage is single precision to keep multi-million-triangle scenes small.
+/// @file
+/// Vector types of the core. Geometry runs in double precision (robust plane tests); bulk triangle
+/// storage is single precision to keep multi-million-triangle scenes small.
 #include <glm/glm.hpp>
 
 namespace osgVis::core

@@ -1,6 +1,7 @@
 #pragma once
-// Creates visibility modules by mode name. Later modules register here so every app and test
-// reaches them by name.
+/// @file
+/// Creates visibility modules by mode name. Later modules register here so every app and test
+/// reaches them by name.
 #include <osgVis/core/ModuleChain.h>
 
 #include <functional>
@@ -18,13 +19,13 @@ struct UnknownModeError : std::invalid_argument
 
 using ModuleFactory = std::function<std::unique_ptr<VisibilityModule>()>;
 
-// Names of all registered modules ("frustum", ...), sorted.
+/// Names of all registered modules ("frustum", ...), sorted.
 std::vector<std::string> moduleNames();
 bool hasModule(const std::string& name);
 void registerModule(const std::string& name, ModuleFactory factory);
-// Throws UnknownModeError naming the known modules.
+/// Throws UnknownModeError naming the known modules.
 std::unique_ptr<VisibilityModule> createModule(const std::string& name);
-// Module names joined by '+' or ',' → chain, e.g. "frustum+octree" (the apps' spelling, since their
-// --modes lists are comma-separated) or "frustum,octree". Throws UnknownModeError.
+/// Module names joined by '+' or ',' → chain, e.g. "frustum+octree" (the apps' spelling, since their
+/// --modes lists are comma-separated) or "frustum,octree". Throws UnknownModeError.
 ModuleChain createChain(const std::string& names);
 } // namespace osgVis::core

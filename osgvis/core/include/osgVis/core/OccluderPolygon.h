@@ -1,7 +1,8 @@
 #pragma once
-// Occluders of the object-space methods: convex planar polygons taken from the scene's own opaque
-// geometry (coplanar neighbouring triangles merged) and from stated occluders, with their
-// neighbours across shared edges so that connected polygons can fuse.
+/// @file
+/// Occluders of the object-space methods: convex planar polygons taken from the scene's own opaque
+/// geometry (coplanar neighbouring triangles merged) and from stated occluders, with their
+/// neighbours across shared edges so that connected polygons can fuse.
 #include <osgVis/core/Plane.h>
 #include <osgVis/core/Scene.h>
 
@@ -14,13 +15,13 @@ constexpr std::uint32_t NoNeighbour = ~std::uint32_t(0);
 
 struct OccluderPolygon
 {
-    std::vector<Vec3> vertices;            // world space, convex, counter-clockwise around plane.normal
-    Plane plane;                           // unit normal
+    std::vector<Vec3> vertices;            ///< world space, convex, counter-clockwise around plane.normal
+    Plane plane;                           ///< unit normal
     double area = 0.0;
     Vec3 centroid{0.0};
-    std::vector<std::uint32_t> neighbours; // per edge i (vertices[i] → vertices[i+1]): index of the
+    std::vector<std::uint32_t> neighbours; ///< per edge i (vertices[i] → vertices[i+1]): index of the
                                            // polygon sharing exactly that edge, or NoNeighbour
-    bool oneSided = false;                 // hides only from the side plane.normal points to (face culling)
-    ObjectId owner = InvalidObject;        // object it comes from; InvalidObject for a stated occluder
+    bool oneSided = false;                 ///< hides only from the side plane.normal points to (face culling)
+    ObjectId owner = InvalidObject;        ///< object it comes from; InvalidObject for a stated occluder
 };
 } // namespace osgVis::core

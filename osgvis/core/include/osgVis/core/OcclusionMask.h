@@ -1,12 +1,13 @@
 #pragma once
-// The occlusion mask of the online mask method (Wang, Agarwal & Har-Peled, after hierarchical
-// occlusion maps): per mask pixel, whether fused occluders cover the pixel's whole area and the
-// largest view depth they have over it, plus the max-depth pyramid M0…Mm that answers "is this
-// screen rectangle hidden behind everything nearer than depth d?" in a few texel reads.
-//
-// Pixel (x, y) is the unit square [x, x+1] × [y, y+1] in mask coordinates (origin at the bottom
-// left of the frame, x right, y up). Depth is the view-space distance along the view axis
-// (-z in eye coordinates), larger = farther; an uncovered pixel holds +infinity.
+/// @file
+/// The occlusion mask of the online mask method (Wang, Agarwal & Har-Peled, after hierarchical
+/// occlusion maps): per mask pixel, whether fused occluders cover the pixel's whole area and the
+/// largest view depth they have over it, plus the max-depth pyramid M0…Mm that answers "is this
+/// screen rectangle hidden behind everything nearer than depth d?" in a few texel reads.
+///
+/// Pixel (x, y) is the unit square [x, x+1] × [y, y+1] in mask coordinates (origin at the bottom
+/// left of the frame, x right, y up). Depth is the view-space distance along the view axis
+/// (-z in eye coordinates), larger = farther; an uncovered pixel holds +infinity.
 #include <cstdint>
 #include <vector>
 
@@ -15,41 +16,41 @@ namespace osgVis::core
 class OcclusionMask
 {
 public:
-    // All pixels uncovered; the pyramid is dropped until buildPyramid().
+    /// All pixels uncovered; the pyramid is dropped until buildPyramid().
     void reset(std::uint32_t width, std::uint32_t height);
     std::uint32_t width() const { return _width; }
     std::uint32_t height() const { return _height; }
 
-    // Level 0, row-major from the bottom row. +infinity = not covered.
+    /// Level 0, row-major from the bottom row. +infinity = not covered.
     float depth(std::uint32_t x, std::uint32_t y) const { return _levels.empty() ? _base[y * _width + x] : _levels[0][y * _width + x]; }
-    // Writing through baseRow() after buildPyramid() leaves the pyramid stale until it is built again.
+    /// Writing through baseRow() after buildPyramid() leaves the pyramid stale until it is built again.
     float* baseRow(std::uint32_t y) { return _base.data() + std::size_t(y) * _width; }
     const float* baseRow(std::uint32_t y) const { return _base.data() + std::size_t(y) * _width; }
-    // Keeps the nearer of the stored and the given depth (a pixel fully covered by several occluders
-    // is hidden behind the nearest of them). Drops the pyramid. A NaN depth covers nothing.
+    /// Keeps the nearer of the stored and the given depth (a pixel fully covered by several occluders
+    /// is hidden behind the nearest of them). Drops the pyramid. A NaN depth covers nothing.
     void cover(std::uint32_t x, std::uint32_t y, float depth);
     std::size_t coveredPixels() const;
 
-    // mask-approx only: the paper's shrinking of the fused union. A pixel stays covered only when
-    // every pixel within Chebyshev distance `pixels` is covered; its depth becomes the largest
-    // depth over that neighbourhood. Not conservative across separate occluders (parallax opens
-    // gaps between them as the eye moves); `mask` shrinks each occluder group on its own instead.
-    // Pixels beyond the mask's border count as uncovered (what lies there was never rasterized, and
-    // an occluder edge just off screen moves in as the eye moves). Drops the pyramid.
+    /// mask-approx only: the paper's shrinking of the fused union. A pixel stays covered only when
+    /// every pixel within Chebyshev distance `pixels` is covered; its depth becomes the largest
+    /// depth over that neighbourhood. Not conservative across separate occluders (parallax opens
+    /// gaps between them as the eye moves); `mask` shrinks each occluder group on its own instead.
+    /// Pixels beyond the mask's border count as uncovered (what lies there was never rasterized, and
+    /// an occluder edge just off screen moves in as the eye moves). Drops the pyramid.
     void shrinkUnion(std::uint32_t pixels);
 
-    // M0 = the mask, M(k+1) texel = max of its 2×2 children (odd sizes: the missing child counts
-    // as uncovered), up to a 1×1 level.
+    /// M0 = the mask, M(k+1) texel = max of its 2×2 children (odd sizes: the missing child counts
+    /// as uncovered), up to a 1×1 level.
     void buildPyramid();
     std::size_t levelCount() const { return _levels.size(); }
 
-    // True only when every pixel that the rectangle [x0, x1] × [y0, y1] (mask coordinates, closed)
-    // overlaps is covered with a stored depth strictly less than `nearestDepth`. A rectangle
-    // reaching outside the mask is never hidden. Needs buildPyramid(); coarse levels first, finer
-    // ones only where a coarse texel is inconclusive.
-    // It overlaps pixels floor(x0)..floor(x1) (and likewise in y): an edge lying exactly on a pixel
-    // boundary still counts the pixel beyond it (conservative). Empty (x0 > x1), NaN or partly
-    // outside rectangles and a NaN `nearestDepth` give false. Without a pyramid, level 0 is scanned.
+    /// True only when every pixel that the rectangle [x0, x1] × [y0, y1] (mask coordinates, closed)
+    /// overlaps is covered with a stored depth strictly less than `nearestDepth`. A rectangle
+    /// reaching outside the mask is never hidden. Needs buildPyramid(); coarse levels first, finer
+    /// ones only where a coarse texel is inconclusive.
+    /// It overlaps pixels floor(x0)..floor(x1) (and likewise in y): an edge lying exactly on a pixel
+    /// boundary still counts the pixel beyond it (conservative). Empty (x0 > x1), NaN or partly
+    /// outside rectangles and a NaN `nearestDepth` give false. Without a pyramid, level 0 is scanned.
     bool rectHidden(double x0, double y0, double x1, double y1, float nearestDepth) const;
 
 private:
@@ -59,9 +60,9 @@ private:
 
     std::uint32_t _width = 0, _height = 0;
     std::vector<float> _base;
-    std::vector<std::vector<float>> _levels; // _levels[0] == _base once built
+    std::vector<std::vector<float>> _levels; ///< _levels[0] == _base once built
     std::vector<std::uint32_t> _levelWidth, _levelHeight;
-    std::vector<std::vector<float>> _spareLevels; // dropped levels keep their memory for the next build
+    std::vector<std::vector<float>> _spareLevels; ///< dropped levels keep their memory for the next build
     std::vector<float> _erosionScratch;
 };
 } // namespace osgVis::core

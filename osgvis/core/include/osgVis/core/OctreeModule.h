@@ -1,12 +1,13 @@
 #pragma once
-// Object-space occlusion culling after Coorg & Teller, "A Spatially and Temporally Coherent Object
-// Space Visibility Algorithm": a few large occluders near the eye (area-angle selection from the
-// eye's cell) cull whole kd-tree nodes by supporting/separating planes; connected occluders fuse;
-// each node keeps the planes that decided it last frame and re-checks only those; frustum
-// culling is folded into the same traversal; subtrees are traversed in parallel (TBB work
-// stealing) with the same answer at every thread count.
-// Modes: "octree" (fused occluders) and "octree-single" (each occluder tested on its own, the
-// paper's comparison).
+/// @file
+/// Object-space occlusion culling after Coorg & Teller, "A Spatially and Temporally Coherent Object
+/// Space Visibility Algorithm": a few large occluders near the eye (area-angle selection from the
+/// eye's cell) cull whole kd-tree nodes by supporting/separating planes; connected occluders fuse;
+/// each node keeps the planes that decided it last frame and re-checks only those; frustum
+/// culling is folded into the same traversal; subtrees are traversed in parallel (TBB work
+/// stealing) with the same answer at every thread count.
+/// Modes: "octree" (fused occluders) and "octree-single" (each occluder tested on its own, the
+/// paper's comparison).
 #include <osgVis/core/BoxOcclusion.h>
 #include <osgVis/core/KdTree.h>
 #include <osgVis/core/OccluderBuilder.h>
@@ -19,13 +20,13 @@ namespace osgVis::core
 {
 struct OctreeOptions
 {
-    std::uint32_t occluders = 32;      // k: actual occluders per frame
-    double areaAngleThreshold = 0.002; // potential-occluder threshold
-    bool fuseConnected = true;         // false: "octree-single"
+    std::uint32_t occluders = 32;      ///< k: actual occluders per frame
+    double areaAngleThreshold = 0.002; ///< potential-occluder threshold
+    bool fuseConnected = true;         ///< false: "octree-single"
     bool temporalCoherence = true;
-    bool coplanarUnions = true; // coplanar pieces of different objects as one occluder
+    bool coplanarUnions = true; ///< coplanar pieces of different objects as one occluder
     std::uint32_t maxLeafObjects = 4;
-    std::uint32_t parallelMinObjects = 256; // subtrees smaller than this run on the calling thread
+    std::uint32_t parallelMinObjects = 256; ///< subtrees smaller than this run on the calling thread
     OccluderBuildOptions occluderBuild;
 };
 
@@ -38,15 +39,15 @@ public:
     void setScene(const Scene& scene) override;
     void sceneChanged(const SceneChange& change) override;
     void cull(const View& view, VisibleSet& visible) override;
-    // Regions: the same traversal with every decision made for the whole box of eyes (a box is
-    // hidden only when the eye volume lies inside all the deciding planes), no frustum, up to 64
-    // occluders chosen around the box's centre, none that a region's near plane could clip.
+    /// Regions: the same traversal with every decision made for the whole box of eyes (a box is
+    /// hidden only when the eye volume lies inside all the deciding planes), no frustum, up to 64
+    /// occluders chosen around the box's centre, none that a region's near plane could clip.
     bool supportsRegions() const override { return true; }
     void cullRegion(const ViewRegion& region, VisibleSet& visible) override;
     void setDebugRecord(DebugRecord* record) override;
 
     const OctreeOptions& options() const { return _options; }
-    // Figures of the last query, for benchmarks and tests.
+    /// Figures of the last query, for benchmarks and tests.
     struct Statistics
     {
         std::uint32_t nodesVisited = 0, nodesInvisible = 0, nodesOutsideFrustum = 0;

@@ -1,5 +1,6 @@
 #pragma once
-// Oriented plane n·p + d = 0; positive distance is the "inside" (kept) half-space.
+/// @file
+/// Oriented plane n·p + d = 0; positive distance is the "inside" (kept) half-space.
 #include <osgVis/core/Math.h>
 
 namespace osgVis::core
@@ -11,11 +12,11 @@ struct Plane
 
     Plane() = default;
     Plane(const Vec3& n, double offset) : normal(n), d(offset) {}
-    // Plane through p with normal n (not necessarily unit).
+    /// Plane through p with normal n (not necessarily unit).
     static Plane fromPointNormal(const Vec3& p, const Vec3& n) { return {n, -glm::dot(n, p)}; }
 
     double distance(const Vec3& p) const { return glm::dot(normal, p) + d; }
-    // Scales to a unit normal; returns false (and leaves the plane unchanged) for a zero normal.
+    /// Scales to a unit normal; returns false (and leaves the plane unchanged) for a zero normal.
     bool normalize();
 };
 } // namespace osgVis::core

@@ -1,6 +1,7 @@
 #pragma once
-// Renderer-independent scene model: the objects a visibility module culls, the triangles they are
-// made of, occluder candidates, and cells/portals where a modeller stated them.
+/// @file
+/// Renderer-independent scene model: the objects a visibility module culls, the triangles they are
+/// made of, occluder candidates, and cells/portals where a modeller stated them.
 #include <osgVis/core/Aabb.h>
 #include <osgVis/core/ConvexPolygon.h>
 
@@ -13,7 +14,7 @@ namespace osgVis::core
 using ObjectId = std::uint32_t;
 constexpr ObjectId InvalidObject = ~ObjectId(0);
 
-// World space, counter-clockwise seen from the side the renderer treats as front.
+/// World space, counter-clockwise seen from the side the renderer treats as front.
 struct Triangle
 {
     Vec3f a, b, c;
@@ -22,36 +23,36 @@ struct Triangle
 enum ObjectFlags : std::uint32_t
 {
     OBJECT_NONE = 0,
-    // Moves or changes: never an occluder, never culled by precomputed data.
+    /// Moves or changes: never an occluder, never culled by precomputed data.
     OBJECT_DYNAMIC = 1u << 0,
-    // Stated occluder (osgVis::Occluder marker above it): its polygons are occluder candidates.
+    /// Stated occluder (osgVis::Occluder marker above it): its polygons are occluder candidates.
     OBJECT_OCCLUDER = 1u << 1,
-    // Blended / transparent: draws but never occludes.
+    /// Blended / transparent: draws but never occludes.
     OBJECT_TRANSPARENT = 1u << 2,
-    // Bounds unknown or not finite (NaN/inf geometry): no module may cull it; ModuleChain keeps it.
+    /// Bounds unknown or not finite (NaN/inf geometry): no module may cull it; ModuleChain keeps it.
     OBJECT_ALWAYS_VISIBLE = 1u << 3,
-    // Drawn, but its triangles may not stand in as automatic occluders: alpha test or discard,
-    // lines/points polygon mode, no depth write, or placed under a node that may not draw it
-    // every frame (LOD, Switch, Sequence, ...).
+    /// Drawn, but its triangles may not stand in as automatic occluders: alpha test or discard,
+    /// lines/points polygon mode, no depth write, or placed under a node that may not draw it
+    /// every frame (LOD, Switch, Sequence, ...).
     OBJECT_NO_AUTO_OCCLUDER = 1u << 4,
-    // Face culling in its drawn state: back faces (counter-clockwise triangles are front faces,
-    // triangles are stored so) or front faces are not drawn, so they hide nothing from that side.
+    /// Face culling in its drawn state: back faces (counter-clockwise triangles are front faces,
+    /// triangles are stored so) or front faces are not drawn, so they hide nothing from that side.
     OBJECT_CULL_BACK = 1u << 5,
     OBJECT_CULL_FRONT = 1u << 6,
 };
 
 struct SceneObject
 {
-    ObjectId id = InvalidObject; // equals the object's index in Scene::objects
-    Aabb bounds;                 // world space
+    ObjectId id = InvalidObject; ///< equals the object's index in Scene::objects
+    Aabb bounds;                 ///< world space
     std::uint32_t triangleCount = 0;
-    std::uint32_t firstTriangle = 0; // into Scene::triangles; triangleCount entries (may be 0 if not kept)
+    std::uint32_t firstTriangle = 0; ///< into Scene::triangles; triangleCount entries (may be 0 if not kept)
     std::uint32_t flags = OBJECT_NONE;
-    std::string name; // for reports and debugging only
+    std::string name; ///< for reports and debugging only
 };
 
-// A polygon that may hide what lies behind it (world space). `owner` is the object it belongs to,
-// or InvalidObject for a stand-alone occluder stated by a marker node.
+/// A polygon that may hide what lies behind it (world space). `owner` is the object it belongs to,
+/// or InvalidObject for a stand-alone occluder stated by a marker node.
 struct OccluderCandidate
 {
     ConvexPolygon polygon;
@@ -74,14 +75,14 @@ struct Portal
 struct Scene
 {
     std::vector<SceneObject> objects;
-    std::vector<Triangle> triangles; // may be empty when the source keeps no triangles
+    std::vector<Triangle> triangles; ///< may be empty when the source keeps no triangles
     std::vector<OccluderCandidate> occluders;
     std::vector<Cell> cells;
     std::vector<Portal> portals;
 
     Aabb bounds() const;
     std::uint64_t totalTriangles() const;
-    // Adds an object with the next id; returns that id.
+    /// Adds an object with the next id; returns that id.
     ObjectId addObject(const Aabb& bounds, std::uint32_t triangleCount, std::uint32_t flags = OBJECT_NONE,
                        std::string name = {});
 };

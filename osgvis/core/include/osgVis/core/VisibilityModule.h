@@ -1,6 +1,7 @@
 #pragma once
-// The visibility API between a renderer and a visibility algorithm: a scene description the module
-// keeps between frames, a view in, a visible set out, notification when the scene changes.
+/// @file
+/// The visibility API between a renderer and a visibility algorithm: a scene description the module
+/// keeps between frames, a view in, a visible set out, notification when the scene changes.
 #include <osgVis/core/DebugRecord.h>
 #include <osgVis/core/View.h>
 #include <osgVis/core/ViewRegion.h>
@@ -15,9 +16,9 @@ struct SceneChange
 {
     enum class Kind
     {
-        Inserted, // objects appended to the scene
-        Moved,    // bounds / triangles of objects changed
-        Removed,  // objects no longer drawn (their ids stay valid but must not be reported)
+        Inserted, ///< objects appended to the scene
+        Moved,    ///< bounds / triangles of objects changed
+        Removed,  ///< objects no longer drawn (their ids stay valid but must not be reported)
     };
     Kind kind = Kind::Moved;
     std::vector<ObjectId> objects;
@@ -28,33 +29,33 @@ class VisibilityModule
 public:
     virtual ~VisibilityModule() = default;
     virtual const char* name() const = 0;
-    // True when the module may cull visible objects (only modes named `approx`).
+    /// True when the module may cull visible objects (only modes named `approx`).
     virtual bool approximate() const { return false; }
 
-    // Build phase: may allocate and take long. The scene outlives the module or the next setScene.
+    /// Build phase: may allocate and take long. The scene outlives the module or the next setScene.
     virtual void setScene(const Scene& scene) = 0;
-    // The scene (same object as given to setScene) changed; the default rebuilds.
+    /// The scene (same object as given to setScene) changed; the default rebuilds.
     virtual void sceneChanged(const SceneChange& change);
-    // The renderer re-extracted the scene into a new object (`scene`) in which every object kept its
-    // id; `changes` say which ids were inserted, moved or removed relative to the scene the module
-    // had. The module must use `scene` from now on; the default calls setScene(scene).
+    /// The renderer re-extracted the scene into a new object (`scene`) in which every object kept its
+    /// id; `changes` say which ids were inserted, moved or removed relative to the scene the module
+    /// had. The module must use `scene` from now on; the default calls setScene(scene).
     virtual void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes);
 
-    // Query phase. `visible` arrives holding the candidates (all objects, or what earlier modules
-    // of a chain kept) and leaves holding a subset of them.
-    // Guarantee (non-approximate modules): never culls a visible object; may keep hidden ones.
+    /// Query phase. `visible` arrives holding the candidates (all objects, or what earlier modules
+    /// of a chain kept) and leaves holding a subset of them.
+    /// Guarantee (non-approximate modules): never culls a visible object; may keep hidden ones.
     virtual void cull(const View& view, VisibleSet& visible) = 0;
 
-    // Region queries (asynchronous visibility): true when cullRegion answers for a whole region of
-    // viewpoints. Modules that cannot keep the default: a chain with one of them has no region answer.
+    /// Region queries (asynchronous visibility): true when cullRegion answers for a whole region of
+    /// viewpoints. Modules that cannot keep the default: a chain with one of them has no region answer.
     virtual bool supportsRegions() const { return false; }
-    // Like cull, for every view `region` holds and in every direction: never culls an object that
-    // some such view sees (non-approximate modules). Called only when supportsRegions(); it may
-    // share per-frame state with cull, so the two are never called concurrently on one module.
+    /// Like cull, for every view `region` holds and in every direction: never culls an object that
+    /// some such view sees (non-approximate modules). Called only when supportsRegions(); it may
+    /// share per-frame state with cull, so the two are never called concurrently on one module.
     virtual void cullRegion(const ViewRegion& region, VisibleSet& visible) { (void)region, (void)visible; }
 
-    // Debug views: when `record` is set, later queries describe their decisions into it (nullptr
-    // stops). Modules without a spatial structure leave it untouched.
+    /// Debug views: when `record` is set, later queries describe their decisions into it (nullptr
+    /// stops). Modules without a spatial structure leave it untouched.
     virtual void setDebugRecord(DebugRecord* record) { (void)record; }
 
 protected:

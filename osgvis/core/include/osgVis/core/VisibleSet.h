@@ -1,5 +1,6 @@
 #pragma once
-// Set of object ids as a bitset: the answer of a visibility query.
+/// @file
+/// Set of object ids as a bitset: the answer of a visibility query.
 #include <osgVis/core/Scene.h>
 
 #include <cstdint>
@@ -20,9 +21,9 @@ public:
     void set(ObjectId id) { _words[id >> 6] |= (std::uint64_t(1) << (id & 63)); }
     void clear(ObjectId id) { _words[id >> 6] &= ~(std::uint64_t(1) << (id & 63)); }
     std::size_t count() const;
-    // this ∩= other
+    /// this ∩= other
     void intersectWith(const VisibleSet& other);
-    // Ids in ascending order.
+    /// Ids in ascending order.
     std::vector<ObjectId> ids() const;
     bool operator==(const VisibleSet& o) const { return _size == o._size && _words == o._words; }
 
