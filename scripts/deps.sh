@@ -7,7 +7,7 @@ packages=(
     libopenscenegraph-dev openscenegraph
     libglfw3-dev libglm-dev libopenmesh-dev libtinygltf-dev libtbb-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    assimp-testmodels
+    assimp-testmodels doxygen
     xvfb xauth x11-utils libgl1-mesa-dri mesa-utils
 )
 missing=()
