@@ -10,18 +10,42 @@ for f in include/osgVis/VisibilityGroup include/osgVis/core/VisibilityModule.h \
     [ -e "$prefix/$f" ] || { echo "installed tree lacks $f" >&2; exit 1; }
 done
 ls "$prefix"/lib/libosgVis.so* "$prefix"/lib/libosgVisCore.so* >/dev/null
+plugins=$(echo "$prefix"/lib/osgPlugins-*)
+for p in osgdb_pvs osgdb_gltf osgdb_serializers_osgvis; do
+    [ -e "$plugins/$p.so" ] || { echo "installed tree lacks $plugins/$p.so" >&2; exit 1; }
+done
+
+# The README's first C++ block, as a user would paste it.
+awk '/^```cpp$/ {on=1; next} /^```$/ && on {exit} on' "$src/../../../README.md" >"$work/readme_example.cpp"
+grep -q "osgVis::VisibilityGroup" "$work/readme_example.cpp"
 
 echo "== find_package(osgVis)"
-cmake -S "$src" -B "$work/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" >"$work/configure.log"
+cmake -S "$src" -B "$work/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" \
+    -DREADME_EXAMPLE="$work/readme_example.cpp" >"$work/configure.log"
 cmake --build "$work/cmake-build" >"$work/build.log"
 out=$("$work/cmake-build/osgvis_consumer")
 echo "$out"
 grep -q "consumer ok" <<<"$out"
 
-echo "== pkg-config osgVis"
-sed -i "s|^prefix=.*|prefix=$prefix|" "$prefix/lib/pkgconfig/osgVis.pc"
+[ -x "$work/cmake-build/readme_example" ] || { echo "the README example did not build" >&2; exit 1; }
+
+echo "== pkg-config osgVis (the .pc finds its prefix from where it lies)"
 flags=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs osgVis)
 c++ -std=c++17 "$src/main.cpp" -o "$work/pc_consumer" $flags -Wl,-rpath,"$prefix/lib"
 out=$("$work/pc_consumer")
 echo "$out"
 grep -q "consumer ok" <<<"$out"
+
+echo "== stock osgconv with the installed plugins"
+if command -v osgconv >/dev/null; then
+    export OSG_LIBRARY_PATH="$prefix/lib" LD_LIBRARY_PATH=
+    osgconv "$src/../../../data/osgvis-demo.osgt" "$work/demo.osgb" >"$work/osgconv.log" 2>&1
+    osgconv "$work/demo.osgb" "$work/demo-again.osgt" >>"$work/osgconv.log" 2>&1
+    grep -q "osgVis::VisibilityGroup" "$work/demo-again.osgt"
+    model=/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb
+    if [ -e "$model" ]; then
+        osgconv "$model" "$work/box.osgt" >>"$work/osgconv.log" 2>&1
+        grep -q "osg::Geometry" "$work/box.osgt"
+    fi
+    echo "osgconv ok"
+fi
