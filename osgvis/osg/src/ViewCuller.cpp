@@ -5,6 +5,7 @@
 
 #include <osg/Camera>
 #include <osg/FrameStamp>
+#include <osg/Notify>
 #include <osg/Viewport>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -116,16 +117,36 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
 
     osg::ref_ptr<const ExtractedScene> scene;
     std::shared_ptr<PerView> view;
+    bool extracted = false;
+    std::string modes;
     {
         std::lock_guard<std::mutex> lock(_mutex);
-        if (!_scene || _root.get() != &root)
+        const bool extract = !_scene || _root.get() != &root;
+        const bool reextract = !extract && _dirty;
+        if (extract)
             _scene = extractScene(root, _extractionOptions);
-        else if (_dirty)
+        else if (reextract)
             _scene = reextractScene(root, *_scene, _extractionOptions);
+        extracted = extract || reextract;
+        if (extracted)
+            modes = _modes;
         _root = &root;
         _dirty = false;
         scene = _scene;
         view = viewFor(key);
+    }
+    // Lets stock tools (osgviewer with OSG_NOTIFY_LEVEL=INFO) show that osgVis culls their scene.
+    if (extracted && osg::isNotifyEnabled(osg::INFO))
+    {
+        std::size_t objects = 0, triangles = 0;
+        for (const core::SceneObject& object : scene->scene.objects)
+            if (!scene->removed(object.id))
+            {
+                ++objects;
+                triangles += object.triangleCount;
+            }
+        OSG_INFO << "osgVis: " << root.getName() << ": extracted " << objects << " objects (" << triangles
+                 << " triangles), modes " << modes << std::endl;
     }
 
     std::unique_lock<std::mutex> debugLock(_debugMutex);
@@ -189,6 +210,8 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     figures.cullMs = std::chrono::duration<double, std::milli>(end - start).count();
     if (frameStamp)
         recordStatistics(camera, frameStamp->getFrameNumber(), figures);
+    OSG_DEBUG << "osgVis: " << root.getName() << ": frame " << (frameStamp ? frameStamp->getFrameNumber() : 0u) << ": "
+              << figures.visible << " of " << figures.objects << " objects visible" << std::endl;
     {
         std::lock_guard<std::mutex> lock(_mutex);
         _last = figures;
