@@ -12,9 +12,10 @@ namespace osgVis::test
 {
 namespace
 {
-osg::ref_ptr<osg::Geometry> namedBox(const std::string& name, const osg::Vec3& min, const osg::Vec3& max)
+osg::ref_ptr<osg::Geometry> namedBox(const std::string& name, const osg::Vec3& min, const osg::Vec3& max,
+                                     const osg::Vec4& colour = osg::Vec4(1, 1, 1, 1))
 {
-    osg::ref_ptr<osg::Geometry> box = makeBox(min, max);
+    osg::ref_ptr<osg::Geometry> box = makeBox(min, max, colour);
     box->setName(name);
     return box;
 }
@@ -76,7 +77,10 @@ osg::ref_ptr<VisibilityGroup> makeDemoScene()
     for (int i = 0; i < 10; ++i)
     {
         const float x = -4.75f + float(i);
-        root->addChild(namedBox("box-" + std::to_string(i), {x, 5, 0}, {x + 0.5f, 5.5f, 0.5f}));
+        // note: a colour of its own keeps each box one object in osgviewer, whose optimizer merges
+        // geometries that look alike.
+        const osg::Vec4 colour(0.25f + 0.075f * float(i), 0.5f, 1.0f - 0.075f * float(i), 1.0f);
+        root->addChild(namedBox("box-" + std::to_string(i), {x, 5, 0}, {x + 0.5f, 5.5f, 0.5f}, colour));
     }
     return root;
 }

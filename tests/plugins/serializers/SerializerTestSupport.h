@@ -5,6 +5,7 @@
 #include <osg/Notify>
 #include <osgDB/Options>
 
+#include <ostream>
 #include <string>
 
 namespace osgVis::test
@@ -15,6 +16,11 @@ struct SerializerFormat
     std::string extension; // osgt, osgb, osgx
     std::string fileType;  // Ascii, Binary, XML
 };
+// gtest names a format by its extension (instead of a byte dump).
+inline void PrintTo(const SerializerFormat& format, std::ostream* out)
+{
+    *out << format.extension;
+}
 
 // Puts <build>/lib/osgPlugins-<version> first on osgDB's library path, so the plugin under test is the
 // one osgDB loads for osgVis classes.
