@@ -3,6 +3,7 @@
 
 #include <osgVis/Occluder>
 
+#include <osg/Notify>
 #include <osgDB/InputStream>
 #include <osgDB/ObjectWrapper>
 #include <osgDB/OutputStream>
@@ -16,7 +17,7 @@ bool checkPolygons(const osgVis::Occluder& occluder)
 }
 
 // A polygon count, then each polygon (PolygonStream) as a "Polygon" property: the XML format needs a
-// named element for each nested list. A stream failure keeps the polygons read in full and reports the
+// named element for each nested list. A failure keeps the polygons read in full and reports the
 // property as failed.
 bool readPolygons(osgDB::InputStream& is, osgVis::Occluder& occluder)
 {
@@ -28,9 +29,18 @@ bool readPolygons(osgDB::InputStream& is, osgVis::Occluder& occluder)
     bool complete = true;
     for (unsigned i = 0; i < count && complete; ++i)
     {
+        // note: a text file's count may promise more polygons than follow: keep those that do and go on
+        // after the list's end instead of reading into the next object.
+        if (!is.isBinary() && !is.matchString("Polygon"))
+        {
+            OSG_WARN << "osgVis::Occluder \"" << occluder.getName() << "\": " << i
+                     << " polygons where the file promises " << count << std::endl;
+            is >> is.END_BRACKET;
+            occluder.setPolygons(polygons);
+            return false;
+        }
         osgVis::serializers::Polygon polygon;
-        is >> is.PROPERTY("Polygon");
-        complete = !is.getException() && osgVis::serializers::readPolygon(is, polygon);
+        complete = osgVis::serializers::readPolygon(is, polygon);
         if (complete)
             polygons.push_back(std::move(polygon));
     }
