@@ -56,7 +56,8 @@ GlfwAppOptions parseOptions(int argc, char** argv)
     for (std::size_t i = 0; i < args.size(); ++i)
     {
         const std::string& arg = args[i];
-        auto value = [&]() -> const std::string& {
+        auto value = [&]() -> const std::string&
+        {
             if (i + 1 >= args.size())
                 throw OptionsError(arg + " expects a value");
             return args[++i];

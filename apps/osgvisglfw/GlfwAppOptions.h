@@ -15,7 +15,7 @@ struct OptionsError : std::runtime_error
 
 struct GlfwAppOptions
 {
-    std::string modelPath;              // any OSG-readable file; empty: the built-in demo
+    std::string modelPath;               // any OSG-readable file; empty: the built-in demo
     std::string mode = "frustum+octree"; // "osg" (no osgVis node) or a module chain
     unsigned width = 1024, height = 768; // window size in screen coordinates
     unsigned frames = 0;                 // stop after this many frames; 0: when the window closes

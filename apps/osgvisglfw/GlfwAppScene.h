@@ -20,7 +20,7 @@ extern const char* const OsgMode;
 
 struct CulledScene
 {
-    osg::ref_ptr<osg::Node> root;                 // what the viewer renders
+    osg::ref_ptr<osg::Node> root;                  // what the viewer renders
     osg::ref_ptr<VisibilityGroup> visibilityGroup; // null in mode "osg"
 };
 

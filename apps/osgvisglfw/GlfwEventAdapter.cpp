@@ -28,30 +28,54 @@ int osgKeySymbol(int glfwKey, int glfwMods)
         return Key::KEY_KP_0 + (glfwKey - GLFW_KEY_KP_0);
     switch (glfwKey)
     {
-    case GLFW_KEY_ESCAPE: return Key::KEY_Escape;
-    case GLFW_KEY_ENTER: return Key::KEY_Return;
-    case GLFW_KEY_KP_ENTER: return Key::KEY_KP_Enter;
-    case GLFW_KEY_TAB: return Key::KEY_Tab;
-    case GLFW_KEY_BACKSPACE: return Key::KEY_BackSpace;
-    case GLFW_KEY_INSERT: return Key::KEY_Insert;
-    case GLFW_KEY_DELETE: return Key::KEY_Delete;
-    case GLFW_KEY_RIGHT: return Key::KEY_Right;
-    case GLFW_KEY_LEFT: return Key::KEY_Left;
-    case GLFW_KEY_DOWN: return Key::KEY_Down;
-    case GLFW_KEY_UP: return Key::KEY_Up;
-    case GLFW_KEY_PAGE_UP: return Key::KEY_Page_Up;
-    case GLFW_KEY_PAGE_DOWN: return Key::KEY_Page_Down;
-    case GLFW_KEY_HOME: return Key::KEY_Home;
-    case GLFW_KEY_END: return Key::KEY_End;
-    case GLFW_KEY_LEFT_SHIFT: return Key::KEY_Shift_L;
-    case GLFW_KEY_RIGHT_SHIFT: return Key::KEY_Shift_R;
-    case GLFW_KEY_LEFT_CONTROL: return Key::KEY_Control_L;
-    case GLFW_KEY_RIGHT_CONTROL: return Key::KEY_Control_R;
-    case GLFW_KEY_LEFT_ALT: return Key::KEY_Alt_L;
-    case GLFW_KEY_RIGHT_ALT: return Key::KEY_Alt_R;
-    case GLFW_KEY_LEFT_SUPER: return Key::KEY_Super_L;
-    case GLFW_KEY_RIGHT_SUPER: return Key::KEY_Super_R;
-    default: return 0;
+    case GLFW_KEY_ESCAPE:
+        return Key::KEY_Escape;
+    case GLFW_KEY_ENTER:
+        return Key::KEY_Return;
+    case GLFW_KEY_KP_ENTER:
+        return Key::KEY_KP_Enter;
+    case GLFW_KEY_TAB:
+        return Key::KEY_Tab;
+    case GLFW_KEY_BACKSPACE:
+        return Key::KEY_BackSpace;
+    case GLFW_KEY_INSERT:
+        return Key::KEY_Insert;
+    case GLFW_KEY_DELETE:
+        return Key::KEY_Delete;
+    case GLFW_KEY_RIGHT:
+        return Key::KEY_Right;
+    case GLFW_KEY_LEFT:
+        return Key::KEY_Left;
+    case GLFW_KEY_DOWN:
+        return Key::KEY_Down;
+    case GLFW_KEY_UP:
+        return Key::KEY_Up;
+    case GLFW_KEY_PAGE_UP:
+        return Key::KEY_Page_Up;
+    case GLFW_KEY_PAGE_DOWN:
+        return Key::KEY_Page_Down;
+    case GLFW_KEY_HOME:
+        return Key::KEY_Home;
+    case GLFW_KEY_END:
+        return Key::KEY_End;
+    case GLFW_KEY_LEFT_SHIFT:
+        return Key::KEY_Shift_L;
+    case GLFW_KEY_RIGHT_SHIFT:
+        return Key::KEY_Shift_R;
+    case GLFW_KEY_LEFT_CONTROL:
+        return Key::KEY_Control_L;
+    case GLFW_KEY_RIGHT_CONTROL:
+        return Key::KEY_Control_R;
+    case GLFW_KEY_LEFT_ALT:
+        return Key::KEY_Alt_L;
+    case GLFW_KEY_RIGHT_ALT:
+        return Key::KEY_Alt_R;
+    case GLFW_KEY_LEFT_SUPER:
+        return Key::KEY_Super_L;
+    case GLFW_KEY_RIGHT_SUPER:
+        return Key::KEY_Super_R;
+    default:
+        return 0;
     }
 }
 
@@ -120,7 +144,7 @@ void GlfwEventAdapter::onMouseButton(GLFWwindow* window, int button, int action,
 {
     GlfwEventAdapter& self = adapterOf(window);
     // OSG numbers buttons 1 left, 2 middle, 3 right; GLFW 0 left, 1 right, 2 middle.
-    const unsigned osgButton = button == GLFW_MOUSE_BUTTON_LEFT    ? 1
+    const unsigned osgButton = button == GLFW_MOUSE_BUTTON_LEFT     ? 1
                                : button == GLFW_MOUSE_BUTTON_MIDDLE ? 2
                                : button == GLFW_MOUSE_BUTTON_RIGHT  ? 3
                                                                     : unsigned(button + 1);
