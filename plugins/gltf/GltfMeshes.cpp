@@ -6,6 +6,9 @@
 #include <osg/Geometry>
 #include <osgUtil/SmoothingVisitor>
 
+#include <algorithm>
+#include <cmath>
+
 namespace osgVis::gltfplugin
 {
 namespace
@@ -61,6 +64,11 @@ osg::ref_ptr<osg::Vec3Array> toVec3Array(const FloatElements& elements)
     for (std::size_t i = 0; i < elements.count; ++i)
         (*array)[unsigned(i)].set(elements.values[3 * i], elements.values[3 * i + 1], elements.values[3 * i + 2]);
     return array;
+}
+
+bool allFinite(const FloatElements& elements)
+{
+    return std::all_of(elements.values.begin(), elements.values.end(), [](float v) { return std::isfinite(v); });
 }
 
 osg::ref_ptr<osg::Geometry> buildPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
@@ -127,8 +135,16 @@ osg::ref_ptr<osg::Geometry> buildPrimitive(const tinygltf::Model& model, const t
     const bool surface = mode == GL_TRIANGLES || mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN;
     if (normalAccessor < 0)
     {
-        if (surface)
+        if (surface && allFinite(positions))
             osgUtil::SmoothingVisitor::smooth(*geometry);
+        else if (surface)
+        {
+            // note: the smoother keys vertices by position in an ordered set; NaN breaks its ordering
+            // and crashes it (found by fuzzing). Such a mesh gets one normal.
+            osg::ref_ptr<osg::Vec3Array> up = new osg::Vec3Array;
+            up->push_back(osg::Vec3(0, 0, 1));
+            geometry->setNormalArray(up.get(), osg::Array::BIND_OVERALL);
+        }
         else
         {
             // Points and lines without normals have nothing to light; show their colour as it is.

@@ -288,3 +288,26 @@ TEST(GltfPlugin, GlbLoadsInAFreshOsgconv)
     EXPECT_NE(written.find("gltf Y-up to Z-up"), std::string::npos);
     EXPECT_NE(written.find("Piston_123-844_0_Parts_1#0"), std::string::npos);
 }
+
+// NaN positions are allowed, but OSG's SmoothingVisitor crashes on them (its ordered vertex set
+// loses its ordering; found by the libFuzzer target): such a primitive without normals gets one
+// overall normal instead of generated ones.
+TEST(GltfPlugin, NanPositionsWithoutNormalsGetOneNormal)
+{
+    // Six vertices (0,0,0) (1,0,0) (0,1,0) (NaN,0,0) (1,NaN,1) (0,1,NaN), two triangles, no normals.
+    const std::string gltf = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+        "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+        "accessors":[{"bufferView":0,"componentType":5126,"count":6,"type":"VEC3"}],
+        "bufferViews":[{"buffer":0,"byteLength":72}],
+        "buffers":[{"byteLength":72,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAADAfwAAAAAAAAAAAACAPwAAwH8AAIA/AAAAAAAAgD8AAMB/"}]})";
+    std::istringstream in(gltf);
+    osgDB::ReaderWriter::ReadResult result = gltfReader().readNode(in, nullptr);
+    ASSERT_TRUE(result.validNode()) << result.message();
+    osg::Geometry* geometry = firstGeometry(*result.getNode());
+    ASSERT_NE(geometry, nullptr);
+    EXPECT_EQ(geometry->getName(), "mesh0#0");
+    EXPECT_EQ(geometry->getVertexArray()->getNumElements(), 6u);
+    ASSERT_NE(geometry->getNormalArray(), nullptr);
+    EXPECT_EQ(geometry->getNormalArray()->getBinding(), osg::Array::BIND_OVERALL);
+    EXPECT_EQ(geometry->getNormalArray()->getNumElements(), 1u);
+}
