@@ -28,6 +28,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 
@@ -128,8 +129,9 @@ void printStatistics(unsigned frames, const GlfwAppOptions& options, const Culle
         return;
     }
     const osgVis::CullStatistics last = scene.visibilityGroup->getLastStatistics();
-    std::cout << "osgVis, last frame: " << last.objects << " objects, " << last.visible << " visible, "
-              << last.trianglesVisible << " triangles visible, cull " << last.cullMs << " ms\n";
+    std::cout << std::fixed << std::setprecision(3) << "osgVis, last frame: " << last.objects << " objects, "
+              << last.visible << " visible, " << last.trianglesVisible << " triangles visible, cull " << last.cullMs
+              << " ms\n";
 }
 
 int run(const GlfwAppOptions& options)
@@ -175,6 +177,9 @@ int run(const GlfwAppOptions& options)
             break;
     }
     printStatistics(frames, options, scene);
+    if (!options.screenshotPath.empty() && frames < options.frames)
+        throw AppError("the window closed after " + std::to_string(frames) + " of " + std::to_string(options.frames) +
+                       " frames: no screenshot written");
     return 0;
 }
 } // namespace

@@ -124,3 +124,26 @@ TEST(GlfwApp, UnwritableScreenshotFails)
     EXPECT_EQ(run.exitCode, 1) << run.output;
     EXPECT_NE(run.output.find("cannot write screenshot '" + target + "'"), std::string::npos) << run.output;
 }
+
+#ifdef OSGVIS_GLTF_SAMPLE
+// A glTF file no one here wrote (a Khronos sample shipped by Debian's assimp-testmodels), read by
+// osgVis's osgdb_gltf plugin from the build tree (the tests' OSG_LIBRARY_PATH).
+TEST(GlfwApp, RendersAKhronosGlbSample)
+{
+    if (!haveDisplay())
+        GTEST_SKIP() << "needs an X display (run under scripts/with-display.sh)";
+    if (!std::filesystem::exists(OSGVIS_GLTF_SAMPLE))
+        GTEST_SKIP() << OSGVIS_GLTF_SAMPLE << " is missing (Debian package assimp-testmodels)";
+    const std::filesystem::path dir = scratchDirectory("glfw", "glb");
+    const AppRun run = runGlfwApp(quoted(OSGVIS_GLTF_SAMPLE) + " --frames 2 --size 240x180 --screenshot " +
+                                  quoted(dir / "engine.png"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const LastFrameFigures figures = lastFrameFigures(run.output);
+    EXPECT_GT(figures.objects, 1) << run.output;
+    EXPECT_GT(figures.visible, 0) << run.output;
+    EXPECT_LE(figures.visible, figures.objects) << run.output;
+    const osg::ref_ptr<osg::Image> image = osgDB::readRefImageFile((dir / "engine.png").string());
+    ASSERT_TRUE(image);
+    EXPECT_TRUE(hasTwoColours(*image));
+}
+#endif
