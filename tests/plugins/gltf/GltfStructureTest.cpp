@@ -311,3 +311,60 @@ TEST(GltfPlugin, NanPositionsWithoutNormalsGetOneNormal)
     EXPECT_EQ(geometry->getNormalArray()->getBinding(), osg::Array::BIND_OVERALL);
     EXPECT_EQ(geometry->getNormalArray()->getNumElements(), 1u);
 }
+
+// One mesh "tri" of two primitives over the same triangle: the first with COLOR_0 (normalized
+// bytes: white, black, red with alpha 0) and a material that blends, is double-sided and emissive;
+// the second with no material (glTF's default: opaque white, back faces culled).
+TEST(GltfPlugin, MaterialsAndVertexColours)
+{
+    const std::string gltf = R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"name":"holder","mesh":0}],
+        "meshes":[{"name":"tri","primitives":[{"attributes":{"POSITION":0,"COLOR_0":1},"material":0},
+                                              {"attributes":{"POSITION":0}}]}],
+        "materials":[{"name":"glass","alphaMode":"BLEND","doubleSided":true,"emissiveFactor":[0.1,0.2,0.3],
+                      "pbrMetallicRoughness":{"baseColorFactor":[1,0.5,0.25,0.5]}}],
+        "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},
+                     {"bufferView":0,"byteOffset":36,"componentType":5121,"normalized":true,"count":3,"type":"VEC4"}],
+        "bufferViews":[{"buffer":0,"byteLength":48}],
+        "buffers":[{"byteLength":48,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA/////wAAAP//AAAA"}]})";
+    std::istringstream in(gltf);
+    osgDB::ReaderWriter::ReadResult result = gltfReader().readNode(in, nullptr);
+    ASSERT_TRUE(result.validNode()) << result.message();
+    osg::Geometry* coloured = firstGeometry(*result.getNode());
+    ASSERT_NE(coloured, nullptr);
+    osg::Geode* geode = coloured->getParent(0)->asGeode();
+    EXPECT_EQ(geode->getName(), "tri");
+    EXPECT_EQ(geode->getParent(0)->getName(), "holder");
+    ASSERT_EQ(geode->getNumDrawables(), 2u);
+    EXPECT_EQ(coloured->getName(), "tri#0");
+    osg::Geometry* plain = geode->getDrawable(1)->asGeometry();
+    EXPECT_EQ(plain->getName(), "tri#1");
+
+    // Vertex colours carry the base colour factor (fixed function cannot multiply both).
+    const auto* colours = dynamic_cast<const osg::Vec4Array*>(coloured->getColorArray());
+    ASSERT_NE(colours, nullptr);
+    ASSERT_EQ(colours->size(), 3u);
+    EXPECT_EQ((*colours)[0], osg::Vec4(1, 0.5f, 0.25f, 0.5f));
+    EXPECT_EQ((*colours)[1], osg::Vec4(0, 0, 0, 0.5f));
+    EXPECT_EQ((*colours)[2], osg::Vec4(1, 0, 0, 0));
+    const osg::StateSet* glass = coloured->getStateSet();
+    EXPECT_EQ(glass->getRenderingHint(), int(osg::StateSet::TRANSPARENT_BIN));
+    EXPECT_NE(glass->getAttribute(osg::StateAttribute::BLENDFUNC), nullptr);
+    EXPECT_EQ(glass->getMode(GL_CULL_FACE), unsigned(osg::StateAttribute::OFF));
+    const auto* material = dynamic_cast<const osg::Material*>(glass->getAttribute(osg::StateAttribute::MATERIAL));
+    ASSERT_NE(material, nullptr);
+    EXPECT_EQ(material->getName(), "glass");
+    EXPECT_EQ(material->getColorMode(), osg::Material::AMBIENT_AND_DIFFUSE);
+    EXPECT_EQ(material->getEmission(osg::Material::FRONT), osg::Vec4(0.1f, 0.2f, 0.3f, 1));
+    EXPECT_EQ(material->getDiffuse(osg::Material::FRONT), osg::Vec4(1, 0.5f, 0.25f, 0.5f));
+
+    const osg::StateSet* white = plain->getStateSet();
+    EXPECT_EQ(white->getRenderingHint(), int(osg::StateSet::DEFAULT_BIN));
+    EXPECT_NE(white->getAttribute(osg::StateAttribute::CULLFACE), nullptr);
+    const auto* defaultMaterial = dynamic_cast<const osg::Material*>(white->getAttribute(osg::StateAttribute::MATERIAL));
+    ASSERT_NE(defaultMaterial, nullptr);
+    EXPECT_EQ(defaultMaterial->getDiffuse(osg::Material::FRONT), osg::Vec4(1, 1, 1, 1));
+    EXPECT_EQ(defaultMaterial->getColorMode(), osg::Material::OFF);
+    // Normals were generated (no NORMAL attribute, finite positions): one per vertex.
+    ASSERT_NE(plain->getNormalArray(), nullptr);
+    EXPECT_EQ(plain->getNormalArray()->getNumElements(), 3u);
+}
