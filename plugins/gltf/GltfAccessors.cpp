@@ -101,9 +101,11 @@ ElementView viewAccessor(const tinygltf::Model& model, int accessorIndex, const 
     view.stride = byteStride != 0 ? byteStride : elementSize;
     if (view.count > 0)
     {
-        // note: the last element needs only elementSize bytes, not a whole stride.
-        const std::size_t lastStart = (view.count - 1) * view.stride; // count and stride are bounded above
-        if (view.stride > bytes.size || !fits(accessor.byteOffset, lastStart, bytes.size) ||
+        // note: the last element needs only elementSize bytes, not a whole stride. A stride longer than
+        // the view with two or more elements cannot fit (and could overflow the product below).
+        const bool strideFits = view.count == 1 || view.stride <= bytes.size;
+        const std::size_t lastStart = strideFits ? (view.count - 1) * view.stride : 0;
+        if (!strideFits || !fits(accessor.byteOffset, lastStart, bytes.size) ||
             !fits(accessor.byteOffset + lastStart, elementSize, bytes.size))
             throw GltfError(accessorName(accessorIndex) + " reads past the end of buffer view " +
                             std::to_string(accessor.bufferView));

@@ -368,3 +368,41 @@ TEST(GltfPlugin, MaterialsAndVertexColours)
     ASSERT_NE(plain->getNormalArray(), nullptr);
     EXPECT_EQ(plain->getNormalArray()->getNumElements(), 3u);
 }
+
+// Hand-made faults in a one-triangle file (positions in a 36-byte buffer): each is an error naming
+// what is wrong.
+TEST(GltfPlugin, BrokenReferencesAndRanges)
+{
+    const auto readTriangle = [](const std::string& accessor, const std::string& bufferView, const std::string& node) {
+        const std::string gltf = R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[)" + node +
+                                 R"(],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"accessors":[)" +
+                                 accessor + R"(],"bufferViews":[)" + bufferView +
+                                 R"(],"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
+        std::istringstream in(gltf);
+        return gltfReader().readNode(in, nullptr).message();
+    };
+    const std::string goodAccessor = R"({"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"})";
+    const std::string goodView = R"({"buffer":0,"byteLength":36})";
+    const std::string goodNode = R"({"mesh":0})";
+    EXPECT_EQ(readTriangle(goodAccessor, goodView, goodNode), "");
+    EXPECT_EQ(readTriangle(R"({"bufferView":0,"componentType":5126,"count":4,"type":"VEC3"})", goodView, goodNode),
+              "gltf: <stream>: accessor 0 reads past the end of buffer view 0");
+    EXPECT_EQ(readTriangle(R"({"bufferView":0,"byteOffset":4,"componentType":5126,"count":3,"type":"VEC3"})",
+                           goodView, goodNode),
+              "gltf: <stream>: accessor 0 reads past the end of buffer view 0");
+    EXPECT_EQ(readTriangle(goodAccessor, R"({"buffer":0,"byteOffset":8,"byteLength":36})", goodNode),
+              "gltf: <stream>: buffer view 0 reads past the end of buffer 0 (bytes 8+36 of 36)");
+    EXPECT_EQ(readTriangle(goodAccessor, R"({"buffer":0,"byteLength":36,"byteStride":8})", goodNode),
+              "gltf: <stream>: accessor 0 (POSITION): buffer view 0 has byte stride 8, smaller than the element "
+              "size 12");
+    EXPECT_EQ(readTriangle(R"({"bufferView":0,"componentType":5123,"count":3,"type":"VEC3"})", goodView, goodNode),
+              "gltf: <stream>: accessor 0 (POSITION) has component type 5123, expected 5126");
+    EXPECT_EQ(readTriangle(R"({"bufferView":0,"componentType":5126,"count":3,"type":"VEC2"})", goodView, goodNode),
+              "gltf: <stream>: accessor 0 (POSITION) has type 2, expected 3");
+    EXPECT_EQ(readTriangle(goodAccessor, goodView, R"({"mesh":3})"),
+              "gltf: <stream>: a node refers to mesh 3, but there are 1");
+    EXPECT_EQ(readTriangle(goodAccessor, goodView, R"({"mesh":0,"children":[5]})"),
+              "gltf: <stream>: node 0 refers to node 5, but there are 1");
+    EXPECT_EQ(readTriangle(goodAccessor, goodView, R"({"mesh":0,"children":[0]})"),
+              "gltf: <stream>: node 0 is its own ancestor (a cycle through node 0)");
+}
