@@ -147,10 +147,16 @@ osg::ref_ptr<osg::Geometry> buildPrimitive(const tinygltf::Model& model, const t
         }
         else
         {
-            // Points and lines without normals have nothing to light; show their colour as it is.
+            // Points and lines without normals have nothing to light; show their base colour as it is.
             osg::ref_ptr<osg::StateSet> unlit = new osg::StateSet(*geometry->getStateSet(), osg::CopyOp::SHALLOW_COPY);
             unlit->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
             geometry->setStateSet(unlit.get());
+            if (colorAccessor < 0)
+            {
+                osg::ref_ptr<osg::Vec4Array> baseColor = new osg::Vec4Array;
+                baseColor->push_back(materials.baseColorFactor(primitive.material));
+                geometry->setColorArray(baseColor.get(), osg::Array::BIND_OVERALL);
+            }
         }
     }
     return geometry;

@@ -209,6 +209,17 @@ TEST(GltfPlugin, PrimitiveModes)
         EXPECT_EQ(primitives->getMode(), expected[i].mode);
         EXPECT_EQ(primitives->getDrawElements() != nullptr, expected[i].indexed);
         EXPECT_EQ(primitives->getNumIndices(), expected[i].count);
+        // No normals: triangles get smooth ones, points and lines are drawn unlit in the base colour.
+        const bool surface = expected[i].mode == GL_TRIANGLES || expected[i].mode == GL_TRIANGLE_STRIP ||
+                             expected[i].mode == GL_TRIANGLE_FAN;
+        EXPECT_EQ(geometry->getNormalArray() != nullptr, surface);
+        EXPECT_EQ(geometry->getStateSet()->getMode(GL_LIGHTING),
+                  surface ? unsigned(osg::StateAttribute::INHERIT) : unsigned(osg::StateAttribute::OFF));
+        if (!surface)
+        {
+            ASSERT_NE(geometry->getColorArray(), nullptr);
+            EXPECT_EQ(geometry->getColorArray()->getBinding(), osg::Array::BIND_OVERALL);
+        }
     }
 }
 
