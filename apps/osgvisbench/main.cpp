@@ -11,6 +11,8 @@
 
 #include "../osgvisviewer/SceneSource.h"
 
+#include <PluginPaths.h>
+
 #include <exception>
 #include <iostream>
 
@@ -75,7 +77,7 @@ int reportThreadingFailures(const BenchReport& report)
 
 int main(int argc, char** argv)
 {
-    osgVis::viewer::addOsgVisPluginPaths(); // .pvs scenes load from the build tree and after install
+    osgVis::apps::addOsgVisPluginPaths(); // .pvs and .gltf/.glb load from the build tree and after install
     BenchOptions options;
     std::vector<BenchMode> modes;
     try

@@ -58,8 +58,7 @@ osg::ref_ptr<osg::Node> readModel(const std::string& path)
     osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(path);
     if (!model)
         throw SceneError("cannot read model '" + path +
-                         "': no OpenSceneGraph plugin could load it (osgVis's own, such as .gltf/.glb, are "
-                         "found in OSG's plugin folder or through OSG_LIBRARY_PATH)");
+                         "': no OpenSceneGraph plugin could load it");
     if (!model->getBound().valid())
         throw SceneError("model '" + path + "' holds nothing to draw (empty bounds)");
     return model;

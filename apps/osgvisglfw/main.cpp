@@ -15,6 +15,8 @@
 #include "GlfwAppScene.h"
 #include "GlfwEventAdapter.h"
 
+#include <PluginPaths.h>
+
 #include <osgVis/Statistics>
 #include <osgVis/core/ModuleRegistry.h>
 
@@ -187,6 +189,7 @@ int run(const GlfwAppOptions& options)
 
 int main(int argc, char** argv)
 {
+    osgVis::apps::addOsgVisPluginPaths(); // .gltf/.glb and .pvs load from the build tree and after install
     GlfwAppOptions options;
     try
     {

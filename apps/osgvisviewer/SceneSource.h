@@ -34,8 +34,4 @@ struct ViewerScene
 // the baked data are trusted (and why not).
 ViewerScene loadViewerScene(const ViewerOptions& options);
 
-// Appends osgVis's plugin folders (the build tree's, the installed one, and the one beside the
-// running executable's install prefix) to osgDB's library path, after the user's OSG_LIBRARY_PATH,
-// so `.pvs` files load from the build tree and after installation. Call once at startup.
-void addOsgVisPluginPaths();
 } // namespace osgVis::viewer

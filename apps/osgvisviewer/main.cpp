@@ -5,6 +5,8 @@
 #include "Options.h"
 #include "SceneSource.h"
 
+#include <PluginPaths.h>
+
 #include <osgVis/core/ModuleRegistry.h>
 
 #include <iostream>
@@ -12,7 +14,7 @@
 int main(int argc, char** argv)
 {
     using namespace osgVis::viewer;
-    addOsgVisPluginPaths(); // .pvs scenes load from the build tree and after install
+    osgVis::apps::addOsgVisPluginPaths(); // .pvs and .gltf/.glb load from the build tree and after install
     const std::string program = "osgvisviewer";
     ViewerOptions options;
     try
