@@ -1,7 +1,5 @@
 // osgVis::VisibilityGroup: its modes, asynchronous visibility and extraction options; children come
 // through osg::Group's wrapper.
-#include "VisibilityGroupOptions.h"
-
 #include <osgVis/VisibilityGroup>
 #include <osgVis/core/ModuleRegistry.h>
 
@@ -11,53 +9,10 @@
 #include <osgDB/OutputStream>
 #include <osgDB/Serializer>
 
-#include <map>
-#include <mutex>
 
 namespace
 {
 using osgVis::VisibilityGroup;
-using osgVis::serializers::asyncOptionsOf;
-using osgVis::serializers::extractionOptionsOf;
-
-// The async switch and its options arrive as three properties; setAsync takes them at once (and
-// restarts the views' workers), so they are collected per group while it is read and applied when
-// the group's properties are all read.
-struct PendingAsync
-{
-    bool on = false;
-    osgVis::core::AsyncOptions options;
-};
-std::mutex pendingMutex;
-std::map<const VisibilityGroup*, PendingAsync> pendingAsync; // groups being read, on any reading thread
-
-template <class Update>
-void updatePending(VisibilityGroup& group, Update update)
-{
-    std::lock_guard<std::mutex> lock(pendingMutex);
-    auto found = pendingAsync.find(&group);
-    if (found == pendingAsync.end())
-        found = pendingAsync.emplace(&group, PendingAsync{group.getAsync(), asyncOptionsOf(group)}).first;
-    update(found->second);
-}
-
-struct ApplyPendingAsync : osgDB::FinishedObjectReadCallback
-{
-    void objectRead(osgDB::InputStream&, osg::Object& object) override
-    {
-        auto& group = static_cast<VisibilityGroup&>(object);
-        PendingAsync pending;
-        {
-            std::lock_guard<std::mutex> lock(pendingMutex);
-            auto found = pendingAsync.find(&group);
-            if (found == pendingAsync.end())
-                return;
-            pending = found->second;
-            pendingAsync.erase(found);
-        }
-        group.setAsync(pending.on, pending.options);
-    }
-};
 
 bool checkModes(const VisibilityGroup&)
 {
@@ -103,7 +58,7 @@ bool readAsync(osgDB::InputStream& is, VisibilityGroup& group)
     is >> on;
     if (is.getException())
         return false;
-    updatePending(group, [on](PendingAsync& pending) { pending.on = on; });
+    group.setAsync(on, group.getAsyncOptions()); // cheap on a group no view has culled yet
     return true;
 }
 
@@ -115,7 +70,7 @@ bool writeAsync(osgDB::OutputStream& os, const VisibilityGroup& group)
 
 bool checkOptions(const VisibilityGroup&)
 {
-    return osgVis::serializers::canReadOptions;
+    return true;
 }
 
 bool readAsyncLookAheadFrames(osgDB::InputStream& is, VisibilityGroup& group)
@@ -124,13 +79,15 @@ bool readAsyncLookAheadFrames(osgDB::InputStream& is, VisibilityGroup& group)
     is >> frames;
     if (is.getException())
         return false;
-    updatePending(group, [frames](PendingAsync& pending) { pending.options.lookAheadFrames = frames; });
+    osgVis::core::AsyncOptions options = group.getAsyncOptions();
+    options.lookAheadFrames = frames;
+    group.setAsync(group.getAsync(), options);
     return true;
 }
 
 bool writeAsyncLookAheadFrames(osgDB::OutputStream& os, const VisibilityGroup& group)
 {
-    os << static_cast<unsigned>(asyncOptionsOf(group).lookAheadFrames) << std::endl;
+    os << static_cast<unsigned>(group.getAsyncOptions().lookAheadFrames) << std::endl;
     return true;
 }
 
@@ -140,13 +97,15 @@ bool readAsyncSlack(osgDB::InputStream& is, VisibilityGroup& group)
     is >> slack;
     if (is.getException())
         return false;
-    updatePending(group, [slack](PendingAsync& pending) { pending.options.slack = slack; });
+    osgVis::core::AsyncOptions options = group.getAsyncOptions();
+    options.slack = slack;
+    group.setAsync(group.getAsync(), options);
     return true;
 }
 
 bool writeAsyncSlack(osgDB::OutputStream& os, const VisibilityGroup& group)
 {
-    os << asyncOptionsOf(group).slack << std::endl;
+    os << group.getAsyncOptions().slack << std::endl;
     return true;
 }
 
@@ -156,7 +115,7 @@ bool readKeepTriangles(osgDB::InputStream& is, VisibilityGroup& group)
     is >> keep;
     if (is.getException())
         return false;
-    osgVis::ExtractionOptions options = extractionOptionsOf(group);
+    osgVis::ExtractionOptions options = group.getExtractionOptions();
     options.keepTriangles = keep;
     group.setExtractionOptions(options);
     return true;
@@ -164,7 +123,7 @@ bool readKeepTriangles(osgDB::InputStream& is, VisibilityGroup& group)
 
 bool writeKeepTriangles(osgDB::OutputStream& os, const VisibilityGroup& group)
 {
-    os << extractionOptionsOf(group).keepTriangles << std::endl;
+    os << group.getExtractionOptions().keepTriangles << std::endl;
     return true;
 }
 } // namespace
@@ -174,7 +133,6 @@ REGISTER_OBJECT_WRAPPER(osgVis_VisibilityGroup, new osgVis::VisibilityGroup, osg
 {
     ADD_USER_SERIALIZER(Modes);
     ADD_USER_SERIALIZER(Async);
-    // The options share one checker: written exactly when they can be read back from the group.
     wrapper->addSerializer(new osgDB::UserSerializer<MyClass>("AsyncLookAheadFrames", &checkOptions,
                                                               &readAsyncLookAheadFrames, &writeAsyncLookAheadFrames),
                            osgDB::BaseSerializer::RW_USER);
@@ -184,5 +142,4 @@ REGISTER_OBJECT_WRAPPER(osgVis_VisibilityGroup, new osgVis::VisibilityGroup, osg
     wrapper->addSerializer(
         new osgDB::UserSerializer<MyClass>("KeepTriangles", &checkOptions, &readKeepTriangles, &writeKeepTriangles),
         osgDB::BaseSerializer::RW_USER);
-    wrapper->addFinishedObjectReadCallback(new ApplyPendingAsync);
 }

@@ -73,6 +73,18 @@ bool ViewCuller::getAsync() const
     return _async;
 }
 
+core::AsyncOptions ViewCuller::getAsyncOptions() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _asyncOptions;
+}
+
+ExtractionOptions ViewCuller::getExtractionOptions() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _extractionOptions;
+}
+
 std::string ViewCuller::getModes() const
 {
     std::lock_guard<std::mutex> lock(_mutex);

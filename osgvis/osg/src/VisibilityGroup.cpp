@@ -16,7 +16,8 @@ VisibilityGroup::VisibilityGroup(const std::string& modes) : _culler(new ViewCul
 VisibilityGroup::VisibilityGroup(const VisibilityGroup& other, const osg::CopyOp& copyop)
     : osg::Group(other, copyop), _culler(new ViewCuller(other.getModes()))
 {
-    _culler->setAsync(other.getAsync());
+    _culler->setAsync(other.getAsync(), other.getAsyncOptions());
+    _culler->setExtractionOptions(other.getExtractionOptions());
 }
 
 VisibilityGroup::~VisibilityGroup() = default;

@@ -3,7 +3,6 @@
 #include "SceneComparison.h"
 #include "SerializerScenes.h"
 #include "SerializerTestSupport.h"
-#include "VisibilityGroupOptions.h"
 
 #include "AppProcess.h"
 
@@ -70,17 +69,14 @@ TEST_P(SerializerRoundTrip, StreamKeepsEveryProperty)
 
 TEST_P(SerializerRoundTrip, AsyncAndExtractionOptionsSurvive)
 {
-    if (!osgVis::serializers::canReadOptions)
-        GTEST_SKIP() << "VisibilityGroup has no getAsyncOptions/getExtractionOptions yet: the wrapper cannot "
-                        "write AsyncLookAheadFrames, AsyncSlack and KeepTriangles";
     const osg::ref_ptr<VisibilityGroup> original = osgVis::test::makeRoundTripScene();
     const osg::ref_ptr<VisibilityGroup> loaded =
         asGroup(osgVis::test::readFromString(osgVis::test::writeToString(*original, GetParam()), GetParam()));
     ASSERT_NE(loaded, nullptr);
-    const osgVis::core::AsyncOptions async = osgVis::serializers::asyncOptionsOf(*loaded);
+    const osgVis::core::AsyncOptions async = loaded->getAsyncOptions();
     EXPECT_EQ(async.lookAheadFrames, 7u);
     EXPECT_EQ(async.slack, 0.25);
-    EXPECT_FALSE(osgVis::serializers::extractionOptionsOf(*loaded).keepTriangles);
+    EXPECT_FALSE(loaded->getExtractionOptions().keepTriangles);
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, SerializerRoundTrip,
