@@ -140,16 +140,22 @@ TEST(ThreadingModels, TwoViewsDrawThePlainGraphsPixelsUnderEveryModelSyncAndAsyn
                     EXPECT_GT(culled.visible[v], 0.0);
                     const bool regions = std::string(modes) != "mask";
                     if (async)
+                    {
                         EXPECT_EQ(culled.fallback[v], regions ? 0.0 : -1.0) << "view " << v;
+                    }
                 }
                 // The front view's wall hides the row behind it from the octree, so the comparison is not
                 // vacuous. (At this size the mask's occluder choice keeps the row.)
                 if (std::string(modes) != "mask")
+                {
                     EXPECT_LT(culled.visible[0], double(Objects) - 7.0);
+                }
                 if (threading == osgViewer::ViewerBase::SingleThreaded)
                     singleThreadedVisible = culled.visible;
                 else if (!async)
+                {
                     EXPECT_EQ(culled.visible, singleThreadedVisible) << "a synchronous mode must not depend on threads";
+                }
             }
         }
 }
