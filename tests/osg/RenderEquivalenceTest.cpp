@@ -27,6 +27,8 @@
 using osgVis::test::CaptureImage;
 using osgVis::test::setUpCapturingCamera;
 using osgVis::test::makeBox;
+using osgVis::test::litPixels;
+using osgVis::test::samePixels;
 
 namespace
 {
@@ -117,23 +119,6 @@ Frame render(osg::Node* scene, Culling culling,
     return frame;
 }
 
-unsigned litPixels(const osg::Image& image)
-{
-    unsigned lit = 0;
-    for (unsigned y = 0; y < Height; ++y)
-        for (unsigned x = 0; x < Width; ++x)
-        {
-            const unsigned char* p = image.data(x, y);
-            lit += (p[0] | p[1] | p[2]) != 0;
-        }
-    return lit;
-}
-
-bool samePixels(const osg::Image& a, const osg::Image& b)
-{
-    return a.s() == b.s() && a.t() == b.t() && a.getTotalSizeInBytes() == b.getTotalSizeInBytes() &&
-           std::equal(a.data(), a.data() + a.getTotalSizeInBytes(), b.data());
-}
 } // namespace
 
 TEST(RenderEquivalence, VisibilityGroupAndCullVisitorDrawTheSamePixelsAsOsg)

@@ -2,6 +2,8 @@
 
 #include <osg/StateSet>
 
+#include <algorithm>
+
 namespace osgVis::test
 {
 osg::ref_ptr<osg::Geometry> makeBox(const osg::Vec3& min, const osg::Vec3& max, const osg::Vec4& colour)
@@ -58,5 +60,22 @@ osg::ref_ptr<CaptureImage> setUpCapturingCamera(osg::Camera& camera, unsigned wi
     osg::ref_ptr<CaptureImage> capture = new CaptureImage(width, height);
     camera.setFinalDrawCallback(capture);
     return capture;
+}
+bool samePixels(const osg::Image& a, const osg::Image& b)
+{
+    return a.s() == b.s() && a.t() == b.t() && a.getTotalSizeInBytes() == b.getTotalSizeInBytes() &&
+           std::equal(a.data(), a.data() + a.getTotalSizeInBytes(), b.data());
+}
+
+unsigned litPixels(const osg::Image& image)
+{
+    unsigned lit = 0;
+    for (int y = 0; y < image.t(); ++y)
+        for (int x = 0; x < image.s(); ++x)
+        {
+            const unsigned char* p = image.data(x, y);
+            lit += (p[0] | p[1] | p[2]) != 0;
+        }
+    return lit;
 }
 } // namespace osgVis::test

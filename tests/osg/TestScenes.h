@@ -34,4 +34,9 @@ struct CaptureImage : public osg::Camera::DrawCallback
 // small-feature culling, and a CaptureImage as its final-draw callback, which it returns. Null
 // (the camera untouched) without a display.
 osg::ref_ptr<CaptureImage> setUpCapturingCamera(osg::Camera& camera, unsigned width, unsigned height);
+
+// Same size and the same bytes: what conservative culling must leave of a frame.
+bool samePixels(const osg::Image& a, const osg::Image& b);
+// Pixels of an RGBA image that are not black (the captures clear to black).
+unsigned litPixels(const osg::Image& image);
 } // namespace osgVis::test

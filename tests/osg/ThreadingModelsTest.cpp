@@ -24,6 +24,7 @@
 using osgVis::test::CaptureImage;
 using osgVis::test::setUpCapturingCamera;
 using osgVis::test::makeBox;
+using osgVis::test::samePixels;
 
 namespace
 {
@@ -101,12 +102,6 @@ Result render(osg::Node* scene, osgViewer::ViewerBase::ThreadingModel threading)
         stats->getAttribute(last, osgVis::STATS_ASYNC_FALLBACK, result.fallback[v]);
     }
     return result;
-}
-
-bool samePixels(const osg::Image& a, const osg::Image& b)
-{
-    return a.s() == b.s() && a.t() == b.t() && a.getTotalSizeInBytes() == b.getTotalSizeInBytes() &&
-           std::equal(a.data(), a.data() + a.getTotalSizeInBytes(), b.data());
 }
 
 const osgViewer::ViewerBase::ThreadingModel AllModels[] = {

@@ -19,6 +19,7 @@
 #include <cstdlib>
 
 using namespace osgVis::test::gltf;
+using osgVis::test::litPixels;
 
 namespace
 {
@@ -64,18 +65,6 @@ unsigned differingPixels(const osg::Image& a, const osg::Image& b, int tolerance
                 }
         }
     return differing;
-}
-
-unsigned litPixels(const osg::Image& image)
-{
-    unsigned lit = 0;
-    for (unsigned y = 0; y < Size; ++y)
-        for (unsigned x = 0; x < Size; ++x)
-        {
-            const unsigned char* p = image.data(x, y);
-            lit += (p[0] | p[1] | p[2]) != 0;
-        }
-    return lit;
 }
 
 void expectMatchesReference(const std::string& sample, const std::string& name)
