@@ -68,9 +68,7 @@ struct ElementView
 
 ElementView viewAccessor(const tinygltf::Model& model, int accessorIndex, const char* usage)
 {
-    if (accessorIndex < 0 || std::size_t(accessorIndex) >= model.accessors.size())
-        throw GltfError(std::string(usage) + " refers to accessor " + std::to_string(accessorIndex) + ", but there are " +
-                        std::to_string(model.accessors.size()));
+    checkReference(usage, "accessor", accessorIndex, model.accessors.size());
     const tinygltf::Accessor& accessor = model.accessors[std::size_t(accessorIndex)];
     const std::string name = accessorName(accessorIndex) + " (" + usage + ")";
     if (accessor.sparse.isSparse)
@@ -89,9 +87,7 @@ ElementView viewAccessor(const tinygltf::Model& model, int accessorIndex, const 
         throw GltfError(name + " has an implausible count " + std::to_string(view.count));
     if (accessor.bufferView < 0)
         return view;
-    if (std::size_t(accessor.bufferView) >= model.bufferViews.size())
-        throw GltfError(name + " refers to buffer view " + std::to_string(accessor.bufferView) + ", but there are " +
-                        std::to_string(model.bufferViews.size()));
+    checkReference(name, "buffer view", accessor.bufferView, model.bufferViews.size());
     const ByteRange bytes = bufferViewBytes(model, accessor.bufferView);
     const std::size_t elementSize = size * std::size_t(view.components);
     const std::size_t byteStride = model.bufferViews[std::size_t(accessor.bufferView)].byteStride;
@@ -155,9 +151,7 @@ ByteRange bufferViewBytes(const tinygltf::Model& model, int bufferViewIndex)
         throw GltfError("buffer view " + std::to_string(bufferViewIndex) + " does not exist (there are " +
                         std::to_string(model.bufferViews.size()) + ")");
     const tinygltf::BufferView& view = model.bufferViews[std::size_t(bufferViewIndex)];
-    if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size())
-        throw GltfError("buffer view " + std::to_string(bufferViewIndex) + " refers to buffer " +
-                        std::to_string(view.buffer) + ", but there are " + std::to_string(model.buffers.size()));
+    checkReference("buffer view " + std::to_string(bufferViewIndex), "buffer", view.buffer, model.buffers.size());
     const std::vector<unsigned char>& buffer = model.buffers[std::size_t(view.buffer)].data;
     if (!fits(view.byteOffset, view.byteLength, buffer.size()))
         throw GltfError("buffer view " + std::to_string(bufferViewIndex) + " reads past the end of buffer " +

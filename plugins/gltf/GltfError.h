@@ -1,6 +1,7 @@
 #pragma once
 // What is wrong with a glTF model, in words; the reader prefixes "gltf: <file>: " and hands it to
 // osgDB as the ReadResult's message.
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -10,4 +11,13 @@ struct GltfError : public std::runtime_error
 {
     explicit GltfError(const std::string& what) : std::runtime_error(what) {}
 };
+
+// Every index a glTF file holds is checked before use: "<referrer> refers to <kind> <index>, but
+// there are <count>" when it names nothing.
+inline void checkReference(const std::string& referrer, const char* kind, int index, std::size_t count)
+{
+    if (index < 0 || std::size_t(index) >= count)
+        throw GltfError(referrer + " refers to " + kind + " " + std::to_string(index) + ", but there are " +
+                        std::to_string(count));
+}
 } // namespace osgVis::gltfplugin

@@ -73,9 +73,8 @@ osg::Vec4 MaterialBuilder::baseColorFactor(int materialIndex) const
 
 osg::ref_ptr<osg::StateSet> MaterialBuilder::stateSet(int materialIndex, bool vertexColors)
 {
-    if (materialIndex >= int(_model.materials.size()) || materialIndex < -1)
-        throw GltfError("a primitive refers to material " + std::to_string(materialIndex) + ", but there are " +
-                        std::to_string(_model.materials.size()));
+    if (materialIndex != -1) // -1: no material, glTF's default
+        checkReference("a primitive", "material", materialIndex, _model.materials.size());
     osg::ref_ptr<osg::StateSet>& cached = _stateSets[{materialIndex, vertexColors}];
     if (cached)
         return cached;
@@ -127,9 +126,7 @@ osg::ref_ptr<osg::StateSet> MaterialBuilder::stateSet(int materialIndex, bool ve
 
 osg::ref_ptr<osg::Texture2D> MaterialBuilder::texture(int textureIndex)
 {
-    if (std::size_t(textureIndex) >= _model.textures.size())
-        throw GltfError("a material refers to texture " + std::to_string(textureIndex) + ", but there are " +
-                        std::to_string(_model.textures.size()));
+    checkReference("a material", "texture", textureIndex, _model.textures.size());
     auto found = _textures.find(textureIndex);
     if (found != _textures.end())
         return found->second;
@@ -144,10 +141,8 @@ osg::ref_ptr<osg::Texture2D> MaterialBuilder::texture(int textureIndex)
             tinygltf::Sampler sampler;
             if (source.sampler >= 0)
             {
-                if (std::size_t(source.sampler) >= _model.samplers.size())
-                    throw GltfError("texture " + std::to_string(textureIndex) + " refers to sampler " +
-                                    std::to_string(source.sampler) + ", but there are " +
-                                    std::to_string(_model.samplers.size()));
+                checkReference("texture " + std::to_string(textureIndex), "sampler", source.sampler,
+                               _model.samplers.size());
                 sampler = _model.samplers[std::size_t(source.sampler)];
             }
             texture->setWrap(osg::Texture::WRAP_S, wrapMode(sampler.wrapS));
@@ -162,9 +157,7 @@ osg::ref_ptr<osg::Texture2D> MaterialBuilder::texture(int textureIndex)
 
 osg::ref_ptr<osg::Image> MaterialBuilder::image(int imageIndex)
 {
-    if (std::size_t(imageIndex) >= _model.images.size())
-        throw GltfError("a texture refers to image " + std::to_string(imageIndex) + ", but there are " +
-                        std::to_string(_model.images.size()));
+    checkReference("a texture", "image", imageIndex, _model.images.size());
     auto found = _images.find(imageIndex);
     if (found != _images.end())
         return found->second;

@@ -165,9 +165,7 @@ osg::ref_ptr<osg::Geometry> buildPrimitive(const tinygltf::Model& model, const t
 
 osg::ref_ptr<osg::Geode> buildMesh(const tinygltf::Model& model, int meshIndex, MaterialBuilder& materials)
 {
-    if (meshIndex < 0 || std::size_t(meshIndex) >= model.meshes.size())
-        throw GltfError("a node refers to mesh " + std::to_string(meshIndex) + ", but there are " +
-                        std::to_string(model.meshes.size()));
+    checkReference("a node", "mesh", meshIndex, model.meshes.size());
     const tinygltf::Mesh& mesh = model.meshes[std::size_t(meshIndex)];
     if (mesh.primitives.empty())
         throw GltfError("mesh " + std::to_string(meshIndex) + " has no primitives (glTF requires at least one)");

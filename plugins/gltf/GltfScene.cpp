@@ -51,10 +51,8 @@ public:
 
     osg::ref_ptr<osg::Node> node(int nodeIndex, int parentIndex)
     {
-        if (nodeIndex < 0 || std::size_t(nodeIndex) >= _model.nodes.size())
-            throw GltfError((parentIndex < 0 ? std::string("the scene") : "node " + std::to_string(parentIndex)) +
-                            " refers to node " + std::to_string(nodeIndex) + ", but there are " +
-                            std::to_string(_model.nodes.size()));
+        checkReference(parentIndex < 0 ? std::string("the scene") : "node " + std::to_string(parentIndex), "node",
+                       nodeIndex, _model.nodes.size());
         const std::size_t i = std::size_t(nodeIndex);
         if (_state[i] == State::InProgress)
             throw GltfError("node " + std::to_string(nodeIndex) + " is its own ancestor (a cycle through node " +
