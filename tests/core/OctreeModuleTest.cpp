@@ -186,10 +186,38 @@ TEST(OctreeModule, ConnectedWallsFuseWhereSingleOccludersCannot)
     EXPECT_FALSE(cullWith(fused, scene, view).test(hidden));
     OctreeOptions singleOptions;
     singleOptions.fuseConnected = false;
+    singleOptions.fuseDisjoint = false; // the sweep would fuse them too
     OctreeModule single(singleOptions);
     single.setScene(scene);
     EXPECT_TRUE(cullWith(single, scene, view).test(hidden));
     expectConservative(fused, scene, view, "corner");
+}
+
+TEST(OctreeModule, SweepFusesOccludersThatShareNoEdge)
+{
+    // Two separate walls, the left one nearer, overlapping on screen; the box behind the overlap
+    // sticks out of each wall's shadow alone. Only the occlusion-tree sweep hides it.
+    Scene scene;
+    addWall(scene, 10, -8, 0.5, 6);
+    addWall(scene, 14, -0.5, 8, 6);
+    const ObjectId hidden = addBox(scene, {-2.5, 30, 1}, {2.5, 31, 2}, "behind both walls");
+    const ObjectId peeking = addBox(scene, {-1, 30, 6}, {1, 31, 30}, "rising over them");
+    const View view = perspectiveView({0, 0, 1.7}, {0, 20, 1.7});
+
+    OctreeModule octree;
+    octree.setScene(scene);
+    const VisibleSet kept = cullWith(octree, scene, view);
+    EXPECT_FALSE(kept.test(hidden));
+    EXPECT_TRUE(kept.test(peeking));
+    EXPECT_EQ(octree.lastStatistics().sweptHidden, 1u);
+    EXPECT_GE(octree.lastStatistics().sweptOccluders, 2u);
+    expectConservative(octree, scene, view, "two walls");
+
+    OctreeOptions noSweep;
+    noSweep.fuseDisjoint = false;
+    OctreeModule traversalOnly(noSweep);
+    traversalOnly.setScene(scene);
+    EXPECT_TRUE(cullWith(traversalOnly, scene, view).test(hidden));
 }
 
 TEST(OctreeModule, OccluderReachingInFrontOfTheNearPlaneHidesNothing)

@@ -22,6 +22,7 @@ struct Registry
         {
             OctreeOptions single;
             single.fuseConnected = false;
+            single.fuseDisjoint = false;
             return std::make_unique<OctreeModule>(single);
         };
         const std::pair<const char*, CellPortalStage> cellPortalStages[] = {

@@ -8,6 +8,7 @@
 
 #include "CoplanarUnion.h"
 #include "OcclusionCache.h"
+#include "OcclusionTree.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
@@ -15,6 +16,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <cstdio>
+#include <cstdlib>
 
 namespace osgVis::core
 {
@@ -98,7 +102,21 @@ struct OctreeModule::Impl
     std::vector<std::pair<double, std::uint32_t>> ranked;
     double threshold = 0.0;
 
+    // The occlusion-tree sweep (fuseDisjoint): each object's own polygons, the stated ones, and
+    // per-frame scratch.
+    std::vector<std::vector<std::uint32_t>> objectPolygons;
+    std::vector<std::uint32_t> statedPolygons;
+    std::vector<Vec3> objectPoints;        // per object its distinct vertices (static objects)…
+    std::vector<std::uint32_t> pointsFirst; // …from pointsFirst[id] to pointsFirst[id + 1]
+    OcclusionTree occlusionTree;
+    std::vector<std::pair<double, ObjectId>> sweepOrder;
+    std::vector<std::uint64_t> insertedAs; // per polygon: 2·stamp + (1 when flipped) if inserted this round
+    std::uint64_t insertStamp = 0;
+    std::vector<Vec3> insertVertices;
+    std::vector<double> insertMargins;
+
     void build(const Scene& scene, const OctreeOptions& options);
+    void collectObjectPoints(const Scene& scene);
     void chooseFrontier(std::size_t wanted);
     std::size_t treeDepth() const;
     void traverse(const Scene& scene, const OctreeOptions& options, std::uint32_t node, std::uint32_t depth,
@@ -107,6 +125,10 @@ struct OctreeModule::Impl
     Occlusion testBox(BoxOcclusionCache& cache, const Aabb& box, const std::vector<std::uint32_t>& occluders, bool fuse,
                       std::vector<std::uint32_t>& partial, TraversalOutput& out);
     bool depthSeparated(const OccluderPolygon& polygon, const Aabb& box) const;
+    double depthTolerance(const Aabb& box) const;
+    double marginOf(const OccluderPolygon& polygon) const;
+    void sweep(const Scene& scene, const View& view, const OctreeOptions& options, VisibleSet& visible);
+    void insertPolygons(const std::vector<std::uint32_t>& batch, const View& view, bool oneObject);
     void chooseOccluders(const View& view, std::uint32_t k);
     void chooseRegionOccluders(const ViewRegion& region, std::uint32_t k);
     template <class Usable> void chooseBest(std::uint32_t k, Usable usable);
@@ -126,6 +148,11 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
     tree.build(boxes, options.maxLeafObjects);
 
     polygons = buildOccluderPolygons(scene, options.occluderBuild);
+    collectObjectPoints(scene);
+    objectPolygons.assign(scene.objects.size(), {});
+    statedPolygons.clear();
+    for (std::uint32_t p = 0; p < polygons.size(); ++p)
+        (polygons[p].owner < scene.objects.size() ? objectPolygons[polygons[p].owner] : statedPolygons).push_back(p);
     Aabb region = scene.bounds();
     if (region.empty() || !region.finite())
         region = Aabb(Vec3(-1.0), Vec3(1.0));
@@ -146,12 +173,45 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
     nodeCaches.assign(tree.nodes().size(), BoxOcclusionCache());
     objectCaches.assign(scene.objects.size(), BoxOcclusionCache());
     margins.assign(polygons.size(), 0.0);
+    insertedAs.assign(polygons.size(), 0);
+    insertStamp = 0;
     chooseFrontier(tree.empty() || tree.root().itemCount < options.parallelMinObjects ? 0 : 64);
     const std::size_t depth = treeDepth();
     serial.prepare(depth);
     for (FrontierTask& task : frontier)
         task.output.prepare(depth);
     frame = 0;
+}
+
+// The sweep tests an object by the convex hull of its vertices, far tighter than its box for a
+// tilted shape. Only static objects (a dynamic one's triangles may lag its bounds) with their
+// triangles kept and at most MaxPoints distinct vertices; the others are tested by their box.
+void OctreeModule::Impl::collectObjectPoints(const Scene& scene)
+{
+    constexpr std::size_t MaxPoints = 256;
+    objectPoints.clear();
+    pointsFirst.assign(1, 0);
+    std::vector<Vec3> points;
+    for (const SceneObject& object : scene.objects)
+    {
+        points.clear();
+        const bool kept = std::size_t(object.firstTriangle) + object.triangleCount <= scene.triangles.size();
+        if (kept && (object.flags & OBJECT_DYNAMIC) == 0)
+            for (std::uint32_t t = object.firstTriangle; t < object.firstTriangle + object.triangleCount; ++t)
+            {
+                const Triangle& triangle = scene.triangles[t];
+                for (const Vec3f& v : {triangle.a, triangle.b, triangle.c})
+                    points.push_back(Vec3(v));
+            }
+        std::sort(points.begin(), points.end(),
+                  [](const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+        points.erase(std::unique(points.begin(), points.end()), points.end());
+        if (points.size() <= MaxPoints && std::all_of(points.begin(), points.end(), [](const Vec3& p) {
+                return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+            }))
+            objectPoints.insert(objectPoints.end(), points.begin(), points.end());
+        pointsFirst.push_back(std::uint32_t(objectPoints.size()));
+    }
 }
 
 // The frontier: up to `wanted` subtrees found by splitting the largest first, fixed for the
@@ -291,15 +351,21 @@ void OctreeModule::Impl::rank(std::uint32_t o, double metric, std::uint32_t k)
 
 void OctreeModule::Impl::activateRanked()
 {
-    const double volumeReach = glm::length(eyes.halfExtent);
     for (const auto& [metric, o] : ranked)
     {
-        double reach = 0.0;
-        for (const Vec3& v : polygons[o].vertices)
-            reach = std::max(reach, glm::length(v - eye) + volumeReach);
-        margins[o] = 1e-6 * sceneSize + AngularMargin * reach;
+        margins[o] = marginOf(polygons[o]);
         active.push_back(o);
     }
+}
+
+// How far every deciding plane must clear the eyes: rasterization rounds the occluder's edges.
+double OctreeModule::Impl::marginOf(const OccluderPolygon& polygon) const
+{
+    const double volumeReach = glm::length(eyes.halfExtent);
+    double reach = 0.0;
+    for (const Vec3& v : polygon.vertices)
+        reach = std::max(reach, glm::length(v - eye) + volumeReach);
+    return 1e-6 * sceneSize + AngularMargin * reach;
 }
 
 std::size_t OctreeModule::Impl::treeDepth() const
@@ -326,16 +392,109 @@ std::size_t OctreeModule::Impl::treeDepth() const
 bool OctreeModule::Impl::depthSeparated(const OccluderPolygon& polygon, const Aabb& box) const
 {
     const double eyeSide = polygon.plane.distance(eye) > 0.0 ? 1.0 : -1.0;
-    double behind = std::numeric_limits<double>::max(), farthest = 0.0;
+    double behind = std::numeric_limits<double>::max();
     for (int c = 0; c < 8; ++c)
-    {
-        const Vec3 corner = box.corner(c);
-        behind = std::min(behind, -eyeSide * polygon.plane.distance(corner));
-        farthest = std::max(farthest, glm::length(corner - eye));
-    }
+        behind = std::min(behind, -eyeSide * polygon.plane.distance(box.corner(c)));
+    return behind > depthTolerance(box);
+}
+
+// How far behind an occluder a box must lie so that 24-bit depth cannot let it z-fight through.
+double OctreeModule::Impl::depthTolerance(const Aabb& box) const
+{
+    double farthest = 0.0;
+    for (int c = 0; c < 8; ++c)
+        farthest = std::max(farthest, glm::length(box.corner(c) - eye));
     farthest += glm::length(eyes.halfExtent);
-    const double tolerance = farthest * farthest / (nearDistance * DepthResolution) + 1e-6 * sceneSize;
-    return behind > tolerance;
+    return farthest * farthest / (nearDistance * DepthResolution) + 1e-6 * sceneSize;
+}
+
+// Occluder fusion without shared edges: objects the traversal left visible, nearest first, are
+// tested against an occlusion tree of the polygons of the objects kept before them; a kept
+// object's polygons then join the tree. Only drawn objects' polygons (and stated occluders)
+// occlude, and the order is fixed (distance, then id), so the answer is the same at every thread
+// count.
+void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const OctreeOptions& options, VisibleSet& visible)
+{
+    occlusionTree.reset(eye, view.frustum.plane(Frustum::NEAR).normal, sceneSize);
+    sweepOrder.clear();
+    for (ObjectId id = 0; id < scene.objects.size(); ++id)
+        if (visible.test(id) && (scene.objects[id].flags & OBJECT_ALWAYS_VISIBLE) == 0)
+        {
+            const Aabb& b = scene.objects[id].bounds;
+            sweepOrder.push_back({glm::length(glm::max(glm::max(b.min - eye, eye - b.max), Vec3(0.0))), id});
+        }
+    std::sort(sweepOrder.begin(), sweepOrder.end());
+    insertPolygons(statedPolygons, view, false);
+    for (const auto& [distance, id] : sweepOrder)
+    {
+        const Aabb& bounds = scene.objects[id].bounds;
+        const std::uint32_t first = pointsFirst[id], count = pointsFirst[id + 1] - first;
+        const bool hidden = count > 0
+                                ? occlusionTree.hidden(&objectPoints[first], count, bounds, depthTolerance(bounds))
+                                : occlusionTree.hidden(bounds, depthTolerance(bounds));
+        if (hidden)
+        {
+            visible.clear(id);
+            ++statistics.sweptHidden;
+            if (debug)
+                serial.debugNodes.push_back({bounds, NodeState::Invisible, std::uint32_t(treeDepth() + 1)});
+            continue;
+        }
+        if (occlusionTree.nodeCount() < options.occlusionTreeMaxNodes)
+            insertPolygons(objectPolygons[id], view, true);
+    }
+    statistics.sweptTreeNodes = std::uint32_t(occlusionTree.nodeCount());
+    statistics.sweptOccluders = std::uint32_t(occlusionTree.occluderCount());
+}
+
+// One object's polygons (or the stated ones). An object seen from outside hides with the faces
+// turned to the eye; its two-sided faces turned away count (flipped) only when it shows the eye no
+// face, as a lone wall seen from behind. Stated polygons are each their own occluder and count
+// from either side. An edge shared with a polygon of the same batch facing the same way needs no
+// margin: the renderer rasterizes the shared edge without a crack. Polygons the near plane could
+// clip, and those outside the frustum, are left out.
+void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch, const View& view, bool oneObject)
+{
+    const Plane& nearPlane = view.frustum.plane(Frustum::NEAR);
+    ++insertStamp;
+    bool facesEye = false;
+    for (std::uint32_t p : batch)
+    {
+        const OccluderPolygon& polygon = polygons[p];
+        const double side = polygon.plane.distance(eye);
+        const bool usable = (side > 0.0 || (!polygon.oneSided && side < 0.0)) &&
+                            std::all_of(polygon.vertices.begin(), polygon.vertices.end(),
+                                        [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; }) &&
+                            view.frustum.classify(polygonBounds[p]) != Containment::Outside;
+        insertedAs[p] = usable ? 2 * insertStamp + (side < 0.0 ? 1 : 0) : 0;
+        facesEye = facesEye || (usable && side > 0.0);
+    }
+    if (oneObject && facesEye)
+        for (std::uint32_t p : batch)
+            if ((insertedAs[p] & 1u) != 0)
+                insertedAs[p] = 0;
+    for (std::uint32_t p : batch)
+    {
+        if (insertedAs[p] == 0)
+            continue;
+        const OccluderPolygon& polygon = polygons[p];
+        const bool flipped = (insertedAs[p] & 1u) != 0;
+        const double margin = marginOf(polygon);
+        const std::size_t n = polygon.vertices.size();
+        insertVertices.resize(n);
+        insertMargins.resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            // Flipped, vertex i is the original n-1-i and edge i the original edge n-2-i reversed.
+            const std::size_t vertex = flipped ? n - 1 - i : i;
+            const std::size_t edge = flipped ? (2 * n - 2 - i) % n : i;
+            insertVertices[i] = polygon.vertices[vertex];
+            const std::uint32_t neighbour = polygon.neighbours.empty() ? NoNeighbour : polygon.neighbours[edge];
+            insertMargins[i] = neighbour != NoNeighbour && insertedAs[neighbour] == insertedAs[p] ? 0.0 : margin;
+        }
+        const Plane plane = flipped ? Plane(-polygon.plane.normal, -polygon.plane.d) : polygon.plane;
+        occlusionTree.insert(insertVertices, plane, insertMargins);
+    }
 }
 
 Occlusion OctreeModule::Impl::testBox(BoxOcclusionCache& cache, const Aabb& box,
@@ -532,6 +691,8 @@ void OctreeModule::cull(const View& view, VisibleSet& visible)
     if (pointEye && m.nearDistance > 0.0 && !m.polygons.empty())
         m.chooseOccluders(view, _options.occluders);
     m.traverseAll(*_scene, _options, visible);
+    if (_options.fuseDisjoint && pointEye && m.nearDistance > 0.0 && !m.polygons.empty())
+        m.sweep(*_scene, view, _options, visible);
 
     if (m.debug)
     {

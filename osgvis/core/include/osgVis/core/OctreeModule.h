@@ -25,6 +25,11 @@ struct OctreeOptions
     bool fuseConnected = true;         ///< false: "octree-single"
     bool temporalCoherence = true;
     bool coplanarUnions = true; ///< coplanar pieces of different objects as one occluder
+    /// After the occluder test, objects still visible are swept front to back through an occlusion
+    /// tree of the polygons of the objects found visible before them, so occluders that share no
+    /// edge (many small ones) hide together. Point eyes only; off in "octree-single".
+    bool fuseDisjoint = true;
+    std::uint32_t occlusionTreeMaxNodes = 1u << 18; ///< stop inserting occluders beyond this
     std::uint32_t maxLeafObjects = 4;
     std::uint32_t parallelMinObjects = 256; ///< subtrees smaller than this run on the calling thread
     OccluderBuildOptions occluderBuild;
@@ -52,6 +57,8 @@ public:
     {
         std::uint32_t nodesVisited = 0, nodesInvisible = 0, nodesOutsideFrustum = 0;
         std::uint32_t planeTests = 0, cachedDecisions = 0, activeOccluders = 0;
+        /// The occlusion-tree sweep: objects it hid, polygons it inserted, nodes of its tree.
+        std::uint32_t sweptHidden = 0, sweptOccluders = 0, sweptTreeNodes = 0;
     };
     Statistics lastStatistics() const;
 
