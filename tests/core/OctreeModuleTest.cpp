@@ -186,7 +186,6 @@ TEST(OctreeModule, ConnectedWallsFuseWhereSingleOccludersCannot)
     EXPECT_FALSE(cullWith(fused, scene, view).test(hidden));
     OctreeOptions singleOptions;
     singleOptions.fuseConnected = false;
-    singleOptions.fuseDisjoint = false; // the sweep would fuse them too
     OctreeModule single(singleOptions);
     single.setScene(scene);
     EXPECT_TRUE(cullWith(single, scene, view).test(hidden));
@@ -204,7 +203,9 @@ TEST(OctreeModule, SweepFusesOccludersThatShareNoEdge)
     const ObjectId peeking = addBox(scene, {-1, 30, 6}, {1, 31, 30}, "rising over them");
     const View view = perspectiveView({0, 0, 1.7}, {0, 20, 1.7});
 
-    OctreeModule octree;
+    OctreeOptions sweep;
+    sweep.fuseDisjoint = true;
+    OctreeModule octree(sweep);
     octree.setScene(scene);
     const VisibleSet kept = cullWith(octree, scene, view);
     EXPECT_FALSE(kept.test(hidden));
@@ -213,9 +214,7 @@ TEST(OctreeModule, SweepFusesOccludersThatShareNoEdge)
     EXPECT_GE(octree.lastStatistics().sweptOccluders, 2u);
     expectConservative(octree, scene, view, "two walls");
 
-    OctreeOptions noSweep;
-    noSweep.fuseDisjoint = false;
-    OctreeModule traversalOnly(noSweep);
+    OctreeModule traversalOnly; // the default: no sweep
     traversalOnly.setScene(scene);
     EXPECT_TRUE(cullWith(traversalOnly, scene, view).test(hidden));
 }

@@ -22,8 +22,13 @@ struct Registry
         {
             OctreeOptions single;
             single.fuseConnected = false;
-            single.fuseDisjoint = false;
             return std::make_unique<OctreeModule>(single);
+        };
+        factories["octree-fused"] = []
+        {
+            OctreeOptions fused;
+            fused.fuseDisjoint = true;
+            return std::make_unique<OctreeModule>(fused);
         };
         const std::pair<const char*, CellPortalStage> cellPortalStages[] = {
             {"cellportal", CellPortalStage::EyeToObject},
