@@ -8,12 +8,6 @@ namespace osgVis::core
 {
 namespace
 {
-double distanceToBox(const Vec3& p, const Aabb& box)
-{
-    const Vec3 q = glm::clamp(p, box.min, box.max);
-    return glm::length(p - q);
-}
-
 // Fraction of the frame that the box's projection covers, seen from `eye` with the view's
 // orientation; corners nearer than the near plane are pushed out to it along the view axis.
 double coverage(const MaskProjection& projection, const Aabb& box, const Vec3& shift)
@@ -37,13 +31,13 @@ double coverage(const MaskProjection& projection, const Aabb& box, const Vec3& s
 double importance(const MaskSelectionInput& in, const Aabb& box)
 {
     if (in.measure == OccluderMeasure::Distance)
-        return -distanceToBox(in.eye, box);
+        return -box.distance(in.eye);
     const double r = in.sampleRadius;
     const Vec3 samples[7] = {Vec3(0.0), {r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}};
     const int sampleCount = r > 0.0 ? 7 : 1;
     double phi = std::numeric_limits<double>::max();
     for (int s = 0; s < sampleCount; ++s)
-        phi = std::min(phi, coverage(*in.projection, box, samples[s]) * distanceToBox(in.eye + samples[s], box));
+        phi = std::min(phi, coverage(*in.projection, box, samples[s]) * box.distance(in.eye + samples[s]));
     return phi;
 }
 } // namespace
@@ -63,7 +57,7 @@ std::vector<ObjectId> selectMaskOccluders(const MaskSelectionInput& in)
         bool operator<(const Entry& o) const { return distance > o.distance || (distance == o.distance && node > o.node); }
     };
     std::priority_queue<Entry> queue;
-    queue.push({distanceToBox(in.eye, tree.node(tree.root()).bounds), tree.root()});
+    queue.push({tree.node(tree.root()).bounds.distance(in.eye), tree.root()});
     std::vector<std::pair<double, ObjectId>> candidates;
     while (!queue.empty() && candidates.size() < wanted)
     {
@@ -74,14 +68,14 @@ std::vector<ObjectId> selectMaskOccluders(const MaskSelectionInput& in)
             continue;
         if (!node.leaf())
         {
-            queue.push({distanceToBox(in.eye, tree.node(node.left).bounds), node.left});
-            queue.push({distanceToBox(in.eye, tree.node(node.right).bounds), node.right});
+            queue.push({tree.node(node.left).bounds.distance(in.eye), node.left});
+            queue.push({tree.node(node.right).bounds.distance(in.eye), node.right});
             continue;
         }
         for (ObjectId id : node.objects)
         {
             const Aabb& box = (*in.objects)[id].bounds;
-            if (!(*in.usable)[id] || distanceToBox(in.eye, box) < in.minDistance ||
+            if (!(*in.usable)[id] || box.distance(in.eye) < in.minDistance ||
                 in.view->frustum.classify(box) == Containment::Outside)
                 continue;
             candidates.push_back({importance(in, box), id});

@@ -12,11 +12,6 @@ using Point = OcclusionTree::Point;
 // Image-plane coordinates are tangents of angles: this much is "on the line".
 constexpr double ImageEpsilon = 1e-12;
 
-double distanceToBox(const Vec3& p, const Aabb& box)
-{
-    return glm::length(glm::max(glm::max(box.min - p, p - box.max), Vec3(0.0)));
-}
-
 double cross(const Point& o, const Point& a, const Point& b)
 {
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
@@ -257,15 +252,16 @@ bool OcclusionTree::hidden(const Vec3* points, std::size_t count, const Aabb& bo
 {
     if (_root == Out || count == 0 || bounds.empty())
         return false;
-    std::vector<Point> image(count);
+    std::vector<Point>& image = _queryImage;
+    image.resize(count);
     for (std::size_t i = 0; i < count; ++i)
         if (!project(points[i], image[i]))
             return false; // reaches beside or behind the eye
     convexHull(image);
-    const double nearest = distanceToBox(_eye, bounds); // the hull lies in the bounds: no nearer
+    const double nearest = bounds.distance(_eye); // the hull lies in the bounds: no nearer
 
     _stack.clear();
-    _stack.emplace_back(_root, std::move(image));
+    _stack.emplace_back(_root, image);
     while (!_stack.empty())
     {
         const Ref ref = _stack.back().first;

@@ -103,6 +103,7 @@ private:
     Ref _root = Out;
     std::vector<Line> _edgeLines; // of the occluder being inserted
     std::vector<Point> _image;     // scratch: the projected polygon or hull
+    mutable std::vector<Point> _queryImage;
     mutable std::vector<std::pair<Ref, std::vector<Point>>> _stack;
 };
 } // namespace osgVis::core

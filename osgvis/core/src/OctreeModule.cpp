@@ -419,12 +419,10 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
     sweepOrder.clear();
     for (ObjectId id = 0; id < scene.objects.size(); ++id)
         if (visible.test(id) && (scene.objects[id].flags & OBJECT_ALWAYS_VISIBLE) == 0)
-        {
-            const Aabb& b = scene.objects[id].bounds;
-            sweepOrder.push_back({glm::length(glm::max(glm::max(b.min - eye, eye - b.max), Vec3(0.0))), id});
-        }
+            sweepOrder.push_back({scene.objects[id].bounds.distance(eye), id});
     std::sort(sweepOrder.begin(), sweepOrder.end());
     insertPolygons(statedPolygons, view, false);
+    const std::uint32_t debugDepth = debug ? std::uint32_t(treeDepth() + 1) : 0; // below every tree node
     for (const auto& [distance, id] : sweepOrder)
     {
         const Aabb& bounds = scene.objects[id].bounds;
@@ -437,7 +435,7 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
             visible.clear(id);
             ++statistics.sweptHidden;
             if (debug)
-                serial.debugNodes.push_back({bounds, NodeState::Invisible, std::uint32_t(treeDepth() + 1)});
+                serial.debugNodes.push_back({bounds, NodeState::Invisible, debugDepth});
             continue;
         }
         if (occlusionTree.nodeCount() < options.occlusionTreeMaxNodes)

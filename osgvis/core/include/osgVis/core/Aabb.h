@@ -39,6 +39,8 @@ struct Aabb
         return !(b.min.x > max.x || b.max.x < min.x || b.min.y > max.y || b.max.y < min.y || b.min.z > max.z ||
                  b.max.z < min.z);
     }
+    /// Distance from p to the nearest point of the box (0 inside it).
+    double distance(const Vec3& p) const { return glm::length(p - glm::clamp(p, min, max)); }
     /// Corner i: bit 0 selects x max, bit 1 y max, bit 2 z max.
     Vec3 corner(int i) const { return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z}; }
     /// True when all six coordinates are finite (NaN or infinite input bounds are rejected upstream).
