@@ -2,6 +2,7 @@
 // edge hide together, margins open cracks where edges only touch, and a box is hidden only when
 // it lies behind the occluders. Eye at the origin looking along +y in every case.
 #include "OcclusionTree.h"
+#include "AllocationCounter.h"
 
 #include <gtest/gtest.h>
 
@@ -52,20 +53,20 @@ TEST(OcclusionTree, OneQuadHidesWhatLiesBehindItsCone)
 {
     OcclusionTree tree = treeAtOrigin();
     ASSERT_TRUE(insert(tree, quad(-2, 2, -2, 2, 5), facingEye(5)));
-    EXPECT_TRUE(tree.hidden(box(-1, 1, 8, 9, -1, 1), 0.0));      // behind, inside the cone
-    EXPECT_FALSE(tree.hidden(box(-1, 1, 2, 3, -1, 1), 0.0));     // in front of the quad
-    EXPECT_FALSE(tree.hidden(box(-1, 1, 4.5, 6, -1, 1), 0.0));   // straddles the quad's plane
-    EXPECT_FALSE(tree.hidden(box(3, 5, 10, 11, -1, 1), 0.0));    // beside the cone
-    EXPECT_FALSE(tree.hidden(box(-1, 3.9, 9, 10, -1, 1), 0.0));  // reaches out of the cone (x/y up to 0.4)
-    EXPECT_TRUE(tree.hidden(box(-1, 3.5, 9, 10, -1, 1), 0.0));   // x/y at most 3.5/9 < 0.4: inside
-    EXPECT_FALSE(tree.hidden(box(-1, 1, 8, 9, -1, 1), 3.5));     // not 3.5 behind: z-fighting margin
+    EXPECT_TRUE(tree.hidden(box(-1, 1, 8, 9, -1, 1), 0.0));     // behind, inside the cone
+    EXPECT_FALSE(tree.hidden(box(-1, 1, 2, 3, -1, 1), 0.0));    // in front of the quad
+    EXPECT_FALSE(tree.hidden(box(-1, 1, 4.5, 6, -1, 1), 0.0));  // straddles the quad's plane
+    EXPECT_FALSE(tree.hidden(box(3, 5, 10, 11, -1, 1), 0.0));   // beside the cone
+    EXPECT_FALSE(tree.hidden(box(-1, 3.9, 9, 10, -1, 1), 0.0)); // reaches out of the cone (x/y up to 0.4)
+    EXPECT_TRUE(tree.hidden(box(-1, 3.5, 9, 10, -1, 1), 0.0));  // x/y at most 3.5/9 < 0.4: inside
+    EXPECT_FALSE(tree.hidden(box(-1, 1, 8, 9, -1, 1), 3.5));    // not 3.5 behind: z-fighting margin
 }
 
 TEST(OcclusionTree, RejectsPolygonsSeenFromBehindOrDegenerate)
 {
     OcclusionTree tree = treeAtOrigin();
-    EXPECT_FALSE(insert(tree, quad(-2, 2, -2, 2, 5), Plane(Vec3(0, 1, 0), -5))); // back to the eye
-    EXPECT_FALSE(insert(tree, {{0, 5, 0}, {1, 5, 0}}, facingEye(5)));              // two vertices
+    EXPECT_FALSE(insert(tree, quad(-2, 2, -2, 2, 5), Plane(Vec3(0, 1, 0), -5)));             // back to the eye
+    EXPECT_FALSE(insert(tree, {{0, 5, 0}, {1, 5, 0}}, facingEye(5)));                        // two vertices
     EXPECT_FALSE(insert(tree, {{0, 5, 0}, {0, 10, 0}, {1, 5, 0}}, Plane(Vec3(0, 0, 1), 0))); // eye on its plane
     EXPECT_EQ(tree.occluderCount(), 0u);
     EXPECT_FALSE(tree.hidden(box(-1, 1, 8, 9, -1, 1), 0.0));
@@ -101,7 +102,7 @@ TEST(OcclusionTree, SharedEdgeClosesTheSeamMarginsOpenIt)
 
     OcclusionTree shared = treeAtOrigin();
     ASSERT_TRUE(shared.insert(lower, facingEye(5), {0.0, Margin, Margin})); // edge 0 is the diagonal
-    ASSERT_TRUE(shared.insert(upper, facingEye(5), {Margin, Margin, 0.0}));  // edge 2 is the diagonal
+    ASSERT_TRUE(shared.insert(upper, facingEye(5), {Margin, Margin, 0.0})); // edge 2 is the diagonal
     EXPECT_TRUE(shared.hidden(acrossSeam, 0.0));
 
     OcclusionTree strangers = treeAtOrigin();
@@ -119,6 +120,35 @@ TEST(OcclusionTree, LaterNearerOccluderJoinsTheLeaf)
     ASSERT_TRUE(insert(tree, quad(-1, 1, -1, 1, 5), facingEye(5)));
     EXPECT_TRUE(tree.hidden(box(-0.5, 0.5, 10, 11, -0.5, 0.5), 0.0)); // only the near quad is in front
     EXPECT_FALSE(tree.hidden(box(-3, 3, 10, 11, -0.5, 0.5), 0.0));    // sticks out of the near quad
+}
+
+// A polygon narrower than its margins (a sliver far away) would claim nothing: it is not added.
+TEST(OcclusionTree, PolygonShrunkToNothingByItsMarginsAddsNothing)
+{
+    OcclusionTree tree = treeAtOrigin();
+    EXPECT_FALSE(insert(tree, quad(-1, 1, -0.001, 0.001, 50), facingEye(50))); // 2 mm high, 1 mm margins
+    EXPECT_EQ(tree.occluderCount(), 0u);
+    EXPECT_EQ(tree.nodeCount(), 0u);
+    EXPECT_TRUE(insert(tree, quad(-1, 1, -0.01, 0.01, 50), facingEye(50))); // 2 cm high: room inside
+}
+
+// A fragment reaching a leaf gets only the edge lines it touches. A small quad A (image ±0.2)
+// makes 4 lines; a larger quad B behind it (image ±0.4) is split by A's lines into four outer
+// pieces, touching 3, 2, 2 and 1 of B's edges, and A's own cell, which B covers whole: no line
+// there, the leaf just lists both occluders. Every edge line everywhere would make 4 + 5·4 = 24.
+TEST(OcclusionTree, FragmentsGetOnlyTheEdgeLinesTheyTouch)
+{
+    OcclusionTree tree = treeAtOrigin();
+    ASSERT_TRUE(insert(tree, quad(-1, 1, -1, 1, 5), facingEye(5)));
+    EXPECT_EQ(tree.nodeCount(), 4u);
+    ASSERT_TRUE(insert(tree, quad(-4, 4, -4, 4, 10), facingEye(10)));
+    EXPECT_EQ(tree.nodeCount(), 12u);
+    EXPECT_EQ(tree.occluderCount(), 2u);
+    EXPECT_TRUE(tree.hidden(box(-0.5, 0.5, 12, 13, -0.5, 0.5), 0.0)); // behind both
+    EXPECT_TRUE(tree.hidden(box(-0.5, 0.5, 6, 7, -0.5, 0.5), 0.0));   // between them, within A's cone
+    EXPECT_TRUE(tree.hidden(box(-6, 6, 20, 21, -6, 6), 0.0));         // behind B, beyond A's cone
+    EXPECT_FALSE(tree.hidden(box(-1.5, 1.5, 6, 7, -0.5, 0.5), 0.0));  // between them, beyond A's cone
+    EXPECT_FALSE(tree.hidden(box(-9, 9, 20, 21, -1, 1), 0.0));        // reaches out of B's cone
 }
 
 // A convex hull is tested by its points: a thin tilted triangle behind the edge of an occluder is
@@ -200,4 +230,37 @@ TEST(OcclusionTree, RandomScenesNeverHideASeenPoint)
         }
     }
     EXPECT_GT(hiddenTargets, 50); // the check above has something to check
+}
+
+// Per frame the sweep resets the tree, inserts and queries: once its buffers have grown to a
+// scene's size, doing it all again allocates nothing.
+TEST(OcclusionTree, NoAllocationOnceGrown)
+{
+    std::vector<std::vector<Vec3>> walls;
+    std::vector<Aabb> targets;
+    for (int i = 0; i < 12; ++i)
+    {
+        const double x = -6 + i, depth = 5 + (i % 4) * 2;
+        walls.push_back(quad(x, x + 1.5, -1 - i % 3, 1 + i % 2, depth));
+        targets.push_back(box(x, x + 0.5, 14 + i, 15 + i, -0.5, i % 3 == 0 ? 8 : 0.5)); // every third rises over
+    }
+    const std::vector<double> margins(4, Margin);
+    OcclusionTree tree;
+    std::size_t hiddenCount = 0;
+    const auto frame = [&]
+    {
+        tree.reset(Vec3(0.0), Vec3(0.0, 1.0, 0.0), 100.0);
+        hiddenCount = 0;
+        for (const std::vector<Vec3>& wall : walls)
+            tree.insert(wall, facingEye(wall[0].y), margins);
+        for (const Aabb& target : targets)
+            hiddenCount += tree.hidden(target, 0.0) ? 1 : 0;
+    };
+    frame();
+    const std::size_t warmHidden = hiddenCount;
+    const std::size_t before = osgVis::test::allocationCount();
+    frame();
+    EXPECT_EQ(osgVis::test::allocationCount() - before, 0u);
+    EXPECT_EQ(hiddenCount, warmHidden);
+    EXPECT_EQ(hiddenCount, 8u); // all but the four that rise over the walls
 }

@@ -11,6 +11,9 @@ using Point = OcclusionTree::Point;
 
 // Image-plane coordinates are tangents of angles: this much is "on the line".
 constexpr double ImageEpsilon = 1e-12;
+// A fragment vertex this close to an edge line (relative to its size) touches it; far above the
+// rounding of clipped vertices, so a line the fragment really touches is never left out.
+constexpr double TouchTolerance = 1e-9;
 
 double cross(const Point& o, const Point& a, const Point& b)
 {
@@ -18,14 +21,15 @@ double cross(const Point& o, const Point& a, const Point& b)
 }
 
 // Convex hull (counter-clockwise, Andrew's monotone chain); one or two points stay as they are.
-void convexHull(std::vector<Point>& points)
+// `hull` is scratch.
+void convexHull(std::vector<Point>& points, std::vector<Point>& hull)
 {
     std::sort(points.begin(), points.end(),
               [](const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     points.erase(std::unique(points.begin(), points.end()), points.end());
     if (points.size() < 3)
         return;
-    std::vector<Point> hull(2 * points.size());
+    hull.resize(2 * points.size());
     std::size_t k = 0;
     for (const Point& p : points)
     {
@@ -43,13 +47,11 @@ void convexHull(std::vector<Point>& points)
     points.swap(hull);
 }
 
-// The part of a convex polygon (or segment, or point) on one side of the line; vertices within
-// ImageEpsilon of it stay on both sides.
+// Appends to `out` the part of a convex polygon (or segment, or point) on one side of the line;
+// vertices within ImageEpsilon of it stay on both sides. `polygon` must not live in `out`.
 template <class Line>
-std::vector<Point> clipped(const std::vector<Point>& polygon, const Line& line, bool keepPositive)
+void clipInto(const Point* polygon, std::size_t n, const Line& line, bool keepPositive, std::vector<Point>& out)
 {
-    std::vector<Point> out;
-    const std::size_t n = polygon.size();
     const double sign = keepPositive ? 1.0 : -1.0;
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -60,13 +62,13 @@ std::vector<Point> clipped(const std::vector<Point>& polygon, const Line& line, 
         if ((di > ImageEpsilon && dj < -ImageEpsilon) || (di < -ImageEpsilon && dj > ImageEpsilon))
             out.push_back(polygon[i] + (polygon[j] - polygon[i]) * (di / (di - dj)));
     }
-    return out;
 }
 
-template <class Line> void extremes(const std::vector<Point>& polygon, const Line& line, double& lowest, double& highest)
+template <class Line>
+void extremes(const Point* polygon, std::size_t n, const Line& line, double& lowest, double& highest)
 {
     lowest = highest = line.at(polygon[0]);
-    for (std::size_t i = 1; i < polygon.size(); ++i)
+    for (std::size_t i = 1; i < n; ++i)
     {
         const double d = line.at(polygon[i]);
         lowest = std::min(lowest, d);
@@ -100,7 +102,8 @@ bool OcclusionTree::project(const Vec3& p, Point& image) const
     return std::isfinite(image.x) && std::isfinite(image.y);
 }
 
-bool OcclusionTree::insert(const std::vector<Vec3>& vertices, const Plane& plane, const std::vector<double>& edgeMargins)
+bool OcclusionTree::insert(const std::vector<Vec3>& vertices, const Plane& plane,
+                           const std::vector<double>& edgeMargins)
 {
     const std::size_t n = vertices.size();
     if (n < 3 || edgeMargins.size() != n || !(plane.distance(_eye) > 0.0))
@@ -140,8 +143,19 @@ bool OcclusionTree::insert(const std::vector<Vec3>& vertices, const Plane& plane
         offset -= edgeMargins[i] / nearer * (1.0 + radius2);
         _edgeLines.push_back({normal, offset});
     }
+
+    // Only the shrunk polygon joins the tree: clipped by its own edge lines, it is what every
+    // leaf below may claim, and a polygon the margins shrink to nothing adds nothing.
+    for (const Line& line : _edgeLines)
+    {
+        _clipped.clear();
+        clipInto(_image.data(), _image.size(), line, true, _clipped);
+        _image.swap(_clipped);
+        if (_image.size() < 3)
+            return false;
+    }
     _occluders.push_back({plane, maxDistance});
-    insertFragment(Slot{-1, true}, _image, vertices, std::uint32_t(_occluders.size() - 1));
+    insertShrunkImage(vertices, std::uint32_t(_occluders.size() - 1));
     return true;
 }
 
@@ -153,30 +167,62 @@ OcclusionTree::Ref& OcclusionTree::at(Slot slot)
     return slot.positive ? node.positive : node.negative;
 }
 
-void OcclusionTree::insertFragment(Slot slot, const std::vector<Point>& fragment, const std::vector<Vec3>& polygon,
-                                   std::uint32_t occluder)
+// Pushes the part of _region on one side of the line as a fragment headed for `slot` (its points
+// at the end of _arena), unless that part has no area.
+void OcclusionTree::pushClipped(const Line& line, bool positive, Slot slot)
 {
-    const Ref ref = at(slot);
-    if (ref >= 0)
+    const std::size_t begin = _arena.size();
+    clipInto(_region.data(), _region.size(), line, positive, _arena);
+    if (_arena.size() - begin >= 3)
+        _fragments.push_back({slot, std::uint32_t(begin), std::uint32_t(_arena.size() - begin)});
+    else
+        _arena.resize(begin);
+}
+
+// Sends the shrunk image (_image) down the tree, split by every line it crosses; each fragment
+// that reaches a leaf joins it. Fragments live on a stack whose points sit, in the same order, at
+// the end of _arena, so nothing is allocated once the buffers have grown.
+void OcclusionTree::insertShrunkImage(const std::vector<Vec3>& polygon, std::uint32_t occluder)
+{
+    _arena.assign(_image.begin(), _image.end());
+    _fragments.clear();
+    _fragments.push_back({Slot{-1, true}, 0, std::uint32_t(_image.size())});
+    while (!_fragments.empty())
     {
+        Fragment& top = _fragments.back();
+        const Ref ref = at(top.slot);
+        const Point* points = _arena.data() + top.begin;
+        if (ref < 0)
+        {
+            addToLeaf(top.slot, ref, points, top.count, polygon, occluder);
+            _arena.resize(top.begin);
+            _fragments.pop_back();
+            continue;
+        }
         const Line line = _nodes[std::size_t(ref)].line;
         double lowest, highest;
-        extremes(fragment, line, lowest, highest);
+        extremes(points, top.count, line, lowest, highest);
         if (lowest >= -ImageEpsilon || highest <= ImageEpsilon)
         {
             // Wholly on one side (a fragment lying on the line goes to the positive side).
-            insertFragment(Slot{ref, lowest >= -ImageEpsilon}, fragment, polygon, occluder);
-            return;
+            top.slot = Slot{ref, lowest >= -ImageEpsilon};
+            continue;
         }
-        const std::vector<Point> positive = clipped(fragment, line, true);
-        const std::vector<Point> negative = clipped(fragment, line, false);
-        if (positive.size() >= 3)
-            insertFragment(Slot{ref, true}, positive, polygon, occluder);
-        if (negative.size() >= 3)
-            insertFragment(Slot{ref, false}, negative, polygon, occluder);
-        return;
+        _region.assign(points, points + top.count);
+        _arena.resize(top.begin);
+        _fragments.pop_back();
+        pushClipped(line, true, Slot{ref, true});
+        pushClipped(line, false, Slot{ref, false});
     }
+}
 
+// A fragment of the current occluder's shrunk image reaches a leaf: inside the occluder's edge
+// lines the leaf becomes "in" (with one occluder more), outside them it stays what it was. Only
+// the lines the fragment touches are needed: the leaf's cell is convex, so a cell part outside a
+// line the fragment keeps clear of would join the fragment through a point on that line.
+void OcclusionTree::addToLeaf(Slot slot, Ref ref, const Point* fragment, std::size_t count,
+                              const std::vector<Vec3>& polygon, std::uint32_t occluder)
+{
     Leaf leaf;
     if (ref != Out)
     {
@@ -187,22 +233,19 @@ void OcclusionTree::insertFragment(Slot slot, const std::vector<Point>& fragment
     }
     leaf.occluders[leaf.count++] = occluder;
     _leaves.push_back(leaf);
-    const Ref inside = InLeaf - Ref(_leaves.size() - 1);
-    const Ref replaced = chain(inside, ref);
-    at(slot) = replaced;
-}
-
-// Nodes for the current occluder's edge lines, one under another: inside all of them `inside`,
-// outside any of them what the slot held before.
-OcclusionTree::Ref OcclusionTree::chain(Ref inside, Ref outside)
-{
-    Ref next = inside;
+    Ref next = InLeaf - Ref(_leaves.size() - 1);
     for (std::size_t i = _edgeLines.size(); i-- > 0;)
     {
-        _nodes.push_back({_edgeLines[i], next, outside});
+        const Line& line = _edgeLines[i];
+        const bool touches = std::any_of(
+            fragment, fragment + count,
+            [&](const Point& p) { return line.at(p) <= TouchTolerance * (1.0 + std::abs(p.x) + std::abs(p.y)); });
+        if (!touches)
+            continue;
+        _nodes.push_back({line, next, ref});
         next = Ref(_nodes.size() - 1);
     }
-    return next;
+    at(slot) = next;
 }
 
 // An occluder of the leaf already hides everything behind the polygon: the polygon lies wholly
@@ -257,40 +300,48 @@ bool OcclusionTree::hidden(const Vec3* points, std::size_t count, const Aabb& bo
     for (std::size_t i = 0; i < count; ++i)
         if (!project(points[i], image[i]))
             return false; // reaches beside or behind the eye
-    convexHull(image);
+    convexHull(image, _queryRegion);
     const double nearest = bounds.distance(_eye); // the hull lies in the bounds: no nearer
 
-    _stack.clear();
-    _stack.emplace_back(_root, image);
-    while (!_stack.empty())
+    // Regions on a stack, their points at the end of _queryArena in the same order.
+    _queryArena.assign(image.begin(), image.end());
+    _queryStack.clear();
+    _queryStack.push_back({_root, 0, std::uint32_t(image.size())});
+    while (!_queryStack.empty())
     {
-        const Ref ref = _stack.back().first;
-        std::vector<Point> region = std::move(_stack.back().second);
-        _stack.pop_back();
-        if (ref == Out)
+        QueryRegion& top = _queryStack.back();
+        if (top.ref == Out)
             return false;
-        if (ref < 0)
+        const Point* region = _queryArena.data() + top.begin;
+        if (top.ref < 0)
         {
-            if (!hiddenInLeaf(_leaves[std::size_t(InLeaf - ref)], points, count, nearest, depthTolerance))
+            if (!hiddenInLeaf(_leaves[std::size_t(InLeaf - top.ref)], points, count, nearest, depthTolerance))
                 return false;
+            _queryArena.resize(top.begin);
+            _queryStack.pop_back();
             continue;
         }
-        const Node& node = _nodes[std::size_t(ref)];
+        const Node& node = _nodes[std::size_t(top.ref)];
         double lowest, highest;
-        extremes(region, node.line, lowest, highest);
+        extremes(region, top.count, node.line, lowest, highest);
         if (lowest >= 0.0)
-            _stack.emplace_back(node.positive, std::move(region));
+            top.ref = node.positive;
         else if (highest < 0.0)
-            _stack.emplace_back(node.negative, std::move(region));
+            top.ref = node.negative;
         else
         {
             // The region crosses the line: each side goes on with its own part.
-            std::vector<Point> positive = clipped(region, node.line, true);
-            std::vector<Point> negative = clipped(region, node.line, false);
-            if (!negative.empty())
-                _stack.emplace_back(node.negative, std::move(negative));
-            if (!positive.empty())
-                _stack.emplace_back(node.positive, std::move(positive));
+            _queryRegion.assign(region, region + top.count);
+            _queryArena.resize(top.begin);
+            _queryStack.pop_back();
+            for (const bool positive : {false, true})
+            {
+                const std::size_t begin = _queryArena.size();
+                clipInto(_queryRegion.data(), _queryRegion.size(), node.line, positive, _queryArena);
+                if (_queryArena.size() > begin)
+                    _queryStack.push_back({positive ? node.positive : node.negative, std::uint32_t(begin),
+                                           std::uint32_t(_queryArena.size() - begin)});
+            }
         }
     }
     return true;

@@ -35,8 +35,8 @@ public:
     /// vertex in front of the eye. Edge i (vertices[i] → vertices[i+1]) is pulled into the
     /// polygon by `edgeMargins[i]` (world units at the edge's nearer end; 0 for an edge shared
     /// exactly with a neighbour inserted alongside). Returns false (and adds nothing) for a
-    /// polygon the eye does not see from the front, one reaching behind the eye, or one with
-    /// fewer than three vertices.
+    /// polygon the eye does not see from the front, one reaching behind the eye, one with fewer
+    /// than three vertices, or one its margins shrink to nothing.
     bool insert(const std::vector<Vec3>& vertices, const Plane& plane, const std::vector<double>& edgeMargins);
 
     /// True when every ray from the eye to the convex hull of `points` (which lies in `bounds`)
@@ -86,11 +86,23 @@ private:
         bool positive;
     };
 
+    struct Fragment // of the image being inserted, on its way to `slot`
+    {
+        Slot slot;
+        std::uint32_t begin, count; // its points in _arena
+    };
+    struct QueryRegion // of a query's image, on its way down from `ref`
+    {
+        Ref ref;
+        std::uint32_t begin, count; // its points in _queryArena
+    };
+
     bool project(const Vec3& p, Point& image) const;
     Ref& at(Slot slot);
-    void insertFragment(Slot slot, const std::vector<Point>& fragment, const std::vector<Vec3>& polygon,
-                        std::uint32_t occluder);
-    Ref chain(Ref inside, Ref outside);
+    void insertShrunkImage(const std::vector<Vec3>& polygon, std::uint32_t occluder);
+    void pushClipped(const Line& line, bool positive, Slot slot);
+    void addToLeaf(Slot slot, Ref ref, const Point* fragment, std::size_t count, const std::vector<Vec3>& polygon,
+                   std::uint32_t occluder);
     bool coversBehind(const Leaf& leaf, const std::vector<Vec3>& polygon) const;
     bool hiddenInLeaf(const Leaf& leaf, const Vec3* points, std::size_t count, double nearest,
                       double depthTolerance) const;
@@ -101,9 +113,11 @@ private:
     std::vector<Leaf> _leaves;
     std::vector<Occluder> _occluders;
     Ref _root = Out;
+    // Scratch, kept between calls so that inserting and querying allocate nothing once grown.
     std::vector<Line> _edgeLines; // of the occluder being inserted
-    std::vector<Point> _image;     // scratch: the projected polygon or hull
-    mutable std::vector<Point> _queryImage;
-    mutable std::vector<std::pair<Ref, std::vector<Point>>> _stack;
+    std::vector<Point> _image, _clipped, _arena, _region;
+    std::vector<Fragment> _fragments;
+    mutable std::vector<Point> _queryImage, _queryArena, _queryRegion;
+    mutable std::vector<QueryRegion> _queryStack;
 };
 } // namespace osgVis::core
