@@ -144,6 +144,7 @@ TEST(OctreeModule, IsRegisteredInBothVariants)
 {
     EXPECT_EQ(std::string(createModule("octree")->name()), "octree");
     EXPECT_EQ(std::string(createModule("octree-single")->name()), "octree-single");
+    EXPECT_EQ(std::string(createModule("octree-paper")->name()), "octree-paper");
     EXPECT_FALSE(createModule("octree")->approximate());
     EXPECT_EQ(createChain("frustum+octree").size(), 2u);
 }
@@ -181,10 +182,12 @@ TEST(OctreeModule, ConnectedWallsFuseWhereSingleOccludersCannot)
     const ObjectId hidden = addBox(scene, {-1.5, 14, 2}, {1.5, 15, 4}, "behind the corner");
     const View view = perspectiveView({0, 0, 3}, {0, 20, 3});
 
-    OctreeModule fused;
+    OctreeOptions fusedOptions; // the traversal's own fusion, without the sweep that would fuse them too
+    fusedOptions.fuseDisjoint = false;
+    OctreeModule fused(fusedOptions);
     fused.setScene(scene);
     EXPECT_FALSE(cullWith(fused, scene, view).test(hidden));
-    OctreeOptions singleOptions;
+    OctreeOptions singleOptions = fusedOptions;
     singleOptions.fuseConnected = false;
     OctreeModule single(singleOptions);
     single.setScene(scene);
@@ -214,7 +217,9 @@ TEST(OctreeModule, SweepFusesOccludersThatShareNoEdge)
     EXPECT_GE(octree.lastStatistics().sweptOccluders, 2u);
     expectConservative(octree, scene, view, "two walls");
 
-    OctreeModule traversalOnly; // the default: no sweep
+    OctreeOptions noSweep;
+    noSweep.fuseDisjoint = false;
+    OctreeModule traversalOnly(noSweep);
     traversalOnly.setScene(scene);
     EXPECT_TRUE(cullWith(traversalOnly, scene, view).test(hidden));
 }

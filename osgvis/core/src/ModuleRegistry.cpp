@@ -22,13 +22,14 @@ struct Registry
         {
             OctreeOptions single;
             single.fuseConnected = false;
+            single.fuseDisjoint = false;
             return std::make_unique<OctreeModule>(single);
         };
-        factories["octree-fused"] = []
+        factories["octree-paper"] = []
         {
-            OctreeOptions fused;
-            fused.fuseDisjoint = true;
-            return std::make_unique<OctreeModule>(fused);
+            OctreeOptions paper;
+            paper.fuseDisjoint = false;
+            return std::make_unique<OctreeModule>(paper);
         };
         const std::pair<const char*, CellPortalStage> cellPortalStages[] = {
             {"cellportal", CellPortalStage::EyeToObject},

@@ -15,10 +15,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <tuple>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
+#include <tuple>
 
 namespace osgVis::core
 {
@@ -106,7 +106,7 @@ struct OctreeModule::Impl
     // per-frame scratch.
     std::vector<std::vector<std::uint32_t>> objectPolygons;
     std::vector<std::uint32_t> statedPolygons;
-    std::vector<Vec3> objectPoints;        // per object its distinct vertices (static objects)…
+    std::vector<Vec3> objectPoints;         // per object its distinct vertices (static objects)…
     std::vector<std::uint32_t> pointsFirst; // …from pointsFirst[id] to pointsFirst[id + 1]
     OcclusionTree occlusionTree;
     std::vector<std::pair<double, ObjectId>> sweepOrder;
@@ -128,7 +128,7 @@ struct OctreeModule::Impl
     double depthTolerance(const Aabb& box) const;
     double marginOf(const OccluderPolygon& polygon) const;
     void sweep(const Scene& scene, const View& view, const OctreeOptions& options, VisibleSet& visible);
-    void insertPolygons(const std::vector<std::uint32_t>& batch, const View& view, bool oneObject);
+    void insertPolygons(const std::vector<std::uint32_t>& batch, const View& view, bool oneObject, double minAreaAngle);
     void chooseOccluders(const View& view, std::uint32_t k);
     void chooseRegionOccluders(const ViewRegion& region, std::uint32_t k);
     template <class Usable> void chooseBest(std::uint32_t k, Usable usable);
@@ -206,9 +206,9 @@ void OctreeModule::Impl::collectObjectPoints(const Scene& scene)
         std::sort(points.begin(), points.end(),
                   [](const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
         points.erase(std::unique(points.begin(), points.end()), points.end());
-        if (points.size() <= MaxPoints && std::all_of(points.begin(), points.end(), [](const Vec3& p) {
-                return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-            }))
+        if (points.size() <= MaxPoints &&
+            std::all_of(points.begin(), points.end(),
+                        [](const Vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }))
             objectPoints.insert(objectPoints.end(), points.begin(), points.end());
         pointsFirst.push_back(std::uint32_t(objectPoints.size()));
     }
@@ -421,7 +421,7 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
         if (visible.test(id) && (scene.objects[id].flags & OBJECT_ALWAYS_VISIBLE) == 0)
             sweepOrder.push_back({scene.objects[id].bounds.distance(eye), id});
     std::sort(sweepOrder.begin(), sweepOrder.end());
-    insertPolygons(statedPolygons, view, false);
+    insertPolygons(statedPolygons, view, false, 0.0);
     const std::uint32_t debugDepth = debug ? std::uint32_t(treeDepth() + 1) : 0; // below every tree node
     for (const auto& [distance, id] : sweepOrder)
     {
@@ -439,7 +439,7 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
             continue;
         }
         if (occlusionTree.nodeCount() < options.occlusionTreeMaxNodes)
-            insertPolygons(objectPolygons[id], view, true);
+            insertPolygons(objectPolygons[id], view, true, options.sweepAreaAngleThreshold);
     }
     statistics.sweptTreeNodes = std::uint32_t(occlusionTree.nodeCount());
     statistics.sweptOccluders = std::uint32_t(occlusionTree.occluderCount());
@@ -451,7 +451,8 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
 // from either side. An edge shared with a polygon of the same batch facing the same way needs no
 // margin: the renderer rasterizes the shared edge without a crack. Polygons the near plane could
 // clip, and those outside the frustum, are left out.
-void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch, const View& view, bool oneObject)
+void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch, const View& view, bool oneObject,
+                                        double minAreaAngle)
 {
     const Plane& nearPlane = view.frustum.plane(Frustum::NEAR);
     ++insertStamp;
@@ -461,6 +462,7 @@ void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch,
         const OccluderPolygon& polygon = polygons[p];
         const double side = polygon.plane.distance(eye);
         const bool usable = (side > 0.0 || (!polygon.oneSided && side < 0.0)) &&
+                            areaAngle(polygon, eye) >= minAreaAngle &&
                             std::all_of(polygon.vertices.begin(), polygon.vertices.end(),
                                         [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; }) &&
                             view.frustum.classify(polygonBounds[p]) != Containment::Outside;
@@ -630,7 +632,9 @@ OctreeModule::~OctreeModule() = default;
 
 const char* OctreeModule::name() const
 {
-    return _options.fuseConnected ? "octree" : "octree-single";
+    if (!_options.fuseConnected)
+        return "octree-single";
+    return _options.fuseDisjoint ? "octree" : "octree-paper";
 }
 
 void OctreeModule::setScene(const Scene& scene)
