@@ -105,6 +105,7 @@ struct OctreeModule::Impl
     // The occlusion-tree sweep (fuseDisjoint): each object's own polygons, the stated ones, and
     // per-frame scratch.
     std::vector<std::vector<std::uint32_t>> objectPolygons;
+    std::vector<double> largestPolygonArea; // per object: bounds the area-angle of all its polygons
     std::vector<std::uint32_t> statedPolygons;
     std::vector<Vec3> objectPoints;         // per object its distinct vertices (static objects)…
     std::vector<std::uint32_t> pointsFirst; // …from pointsFirst[id] to pointsFirst[id + 1]
@@ -128,7 +129,8 @@ struct OctreeModule::Impl
     double depthTolerance(const Aabb& box) const;
     double marginOf(const OccluderPolygon& polygon) const;
     void sweep(const Scene& scene, const View& view, const OctreeOptions& options, VisibleSet& visible);
-    void insertPolygons(const std::vector<std::uint32_t>& batch, const View& view, bool oneObject, double minAreaAngle);
+    void insertPolygons(const std::vector<std::uint32_t>& batch, const View& view, const OctreeOptions& options,
+                        bool oneObject);
     void chooseOccluders(const View& view, std::uint32_t k);
     void chooseRegionOccluders(const ViewRegion& region, std::uint32_t k);
     template <class Usable> void chooseBest(std::uint32_t k, Usable usable);
@@ -153,6 +155,10 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
     statedPolygons.clear();
     for (std::uint32_t p = 0; p < polygons.size(); ++p)
         (polygons[p].owner < scene.objects.size() ? objectPolygons[polygons[p].owner] : statedPolygons).push_back(p);
+    largestPolygonArea.assign(scene.objects.size(), 0.0);
+    for (ObjectId id = 0; id < scene.objects.size(); ++id)
+        for (std::uint32_t p : objectPolygons[id])
+            largestPolygonArea[id] = std::max(largestPolygonArea[id], polygons[p].area);
     Aabb region = scene.bounds();
     if (region.empty() || !region.finite())
         region = Aabb(Vec3(-1.0), Vec3(1.0));
@@ -421,7 +427,7 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
         if (visible.test(id) && (scene.objects[id].flags & OBJECT_ALWAYS_VISIBLE) == 0)
             sweepOrder.push_back({scene.objects[id].bounds.distance(eye), id});
     std::sort(sweepOrder.begin(), sweepOrder.end());
-    insertPolygons(statedPolygons, view, false, 0.0);
+    insertPolygons(statedPolygons, view, options, false);
     const std::uint32_t debugDepth = debug ? std::uint32_t(treeDepth() + 1) : 0; // below every tree node
     for (const auto& [distance, id] : sweepOrder)
     {
@@ -438,8 +444,12 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
                 serial.debugNodes.push_back({bounds, NodeState::Invisible, debugDepth});
             continue;
         }
-        if (occlusionTree.nodeCount() < options.occlusionTreeMaxNodes)
-            insertPolygons(objectPolygons[id], view, true, options.sweepAreaAngleThreshold);
+        // A polygon's area-angle is at most its area over the squared distance to the object's box:
+        // an object whose largest polygon falls short from here is not looked through.
+        const double threshold = options.sweepAreaAngleThreshold;
+        if (occlusionTree.nodeCount() < options.occlusionTreeMaxNodes &&
+            !(largestPolygonArea[id] < threshold * distance * distance))
+            insertPolygons(objectPolygons[id], view, options, true);
     }
     statistics.sweptTreeNodes = std::uint32_t(occlusionTree.nodeCount());
     statistics.sweptOccluders = std::uint32_t(occlusionTree.occluderCount());
@@ -451,9 +461,10 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
 // from either side. An edge shared with a polygon of the same batch facing the same way needs no
 // margin: the renderer rasterizes the shared edge without a crack. Polygons the near plane could
 // clip, and those outside the frustum, are left out.
-void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch, const View& view, bool oneObject,
-                                        double minAreaAngle)
+void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch, const View& view,
+                                        const OctreeOptions& options, bool oneObject)
 {
+    const double minAreaAngle = oneObject ? options.sweepAreaAngleThreshold : 0.0;
     const Plane& nearPlane = view.frustum.plane(Frustum::NEAR);
     ++insertStamp;
     bool facesEye = false;
@@ -494,6 +505,8 @@ void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch,
         }
         const Plane plane = flipped ? Plane(-polygon.plane.normal, -polygon.plane.d) : polygon.plane;
         occlusionTree.insert(insertVertices, plane, insertMargins);
+        if (occlusionTree.nodeCount() >= options.occlusionTreeMaxNodes)
+            break;
     }
 }
 

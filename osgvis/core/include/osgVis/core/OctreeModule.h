@@ -35,7 +35,7 @@ struct OctreeOptions
     /// (5e-5 sr: about 60 pixels of a 60-degree 1280x1024 view). Smaller ones cost insertions and
     /// fill the tree's leaves (four occluders each) while hiding almost nothing on their own.
     double sweepAreaAngleThreshold = 5e-5;
-    std::uint32_t occlusionTreeMaxNodes = 1u << 18; ///< stop inserting occluders beyond this
+    std::uint32_t occlusionTreeMaxNodes = 4096; ///< stop inserting occluders beyond this
     std::uint32_t maxLeafObjects = 4;
     std::uint32_t parallelMinObjects = 256; ///< subtrees smaller than this run on the calling thread
     OccluderBuildOptions occluderBuild;
