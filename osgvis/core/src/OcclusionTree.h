@@ -10,8 +10,10 @@
 // Conservative by construction: an "in" leaf lies inside each of its occluders' images shrunk by
 // the occluder's margin (every edge line moves into the polygon by at least the margin's angle,
 // unless the caller says the edge is shared with a neighbour inserted alongside, where
-// rasterization leaves no crack), and clipping that goes wrong numerically can only lose coverage
-// (the leaf still carries all of the occluder's own edge lines).
+// rasterization leaves no crack). A leaf gets only the edge lines its fragment touches; a vertex
+// the clipping put on a line stays within rounding of it (clipping interpolates along edges, and
+// the distance to the cutting line is affine there), far inside the touch tolerance, and clipping
+// keeps vertices near a line on both sides, so a needed line is never left out.
 #include <osgVis/core/Aabb.h>
 #include <osgVis/core/Plane.h>
 
