@@ -445,7 +445,7 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
             continue;
         }
         // A polygon's area-angle is at most its area over the squared distance to the object's box:
-        // an object whose largest polygon falls short from here is not looked through.
+        // an object whose largest polygon falls short from here has nothing for the tree.
         const double threshold = options.sweepAreaAngleThreshold;
         if (occlusionTree.nodeCount() < options.occlusionTreeMaxNodes &&
             !(largestPolygonArea[id] < threshold * distance * distance))

@@ -32,7 +32,7 @@ struct OctreeOptions
     /// "octree-single".
     bool fuseDisjoint = true;
     /// A kept object's polygon joins the occlusion tree only when its area-angle reaches this
-    /// (5e-5 sr: about 60 pixels of a 60-degree 1280x1024 view). Smaller ones cost insertions and
+    /// (5e-5 sr: about 40 pixels at the centre of a 60-degree-high 1280x1024 view). Smaller ones cost insertions and
     /// fill the tree's leaves (four occluders each) while hiding almost nothing on their own.
     double sweepAreaAngleThreshold = 5e-5;
     std::uint32_t occlusionTreeMaxNodes = 4096; ///< stop inserting occluders beyond this
