@@ -44,11 +44,22 @@ struct ModeMetrics
     std::optional<MisdrawnPixels> misdrawn; // nullopt: the oracle gave no pixel counts
 };
 
+// What one view drew, for per-view comparisons and plots (docs/benchmark.md, "Per view").
+struct ViewRecord
+{
+    std::uint32_t objects = 0;        // |S(v)|
+    std::uint64_t triangles = 0;      // tri(S(v))
+    std::uint32_t falseInvisible = 0; // |E(v) \ S(v)|
+    double cullMs = 0.0;
+    std::uint64_t digest = 0; // FNV-1a 64 of S(v)'s ids, ascending: equal digests, equal sets
+};
+
 struct ModeResult
 {
     BenchMode mode;
     ModeMetrics metrics;
     std::uint32_t viewsWithFalseInvisible = 0;
+    std::vector<ViewRecord> perView;
 };
 
 // One point of a cull-only sweep: a module chain's own query time at one observer speed and thread
@@ -131,6 +142,7 @@ struct ThreadingRow
     std::optional<double> fps;
     std::optional<double> fpsVsSingleThreaded; // fps / fps of the same mode and async, SingleThreaded
     std::optional<std::size_t> differingViews; // sync rows: views drawing another set than the main table's pass
+    std::vector<ViewRecord> perView;
 };
 
 struct BenchReport

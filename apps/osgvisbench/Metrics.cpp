@@ -35,6 +35,19 @@ struct CullTally
     }
 };
 
+// FNV-1a 64 over the ids of the set in ascending order, each as 4 little-endian bytes.
+std::uint64_t setDigest(const core::VisibleSet& set)
+{
+    std::uint64_t hash = 0xcbf29ce484222325ull;
+    for (const core::ObjectId id : set.ids())
+        for (int byte = 0; byte < 4; ++byte)
+        {
+            hash ^= (id >> (8 * byte)) & 0xffu;
+            hash *= 0x100000001b3ull;
+        }
+    return hash;
+}
+
 const ModeResult* findKind(const std::vector<ModeResult>& results, BenchMode::Kind kind)
 {
     for (const ModeResult& result : results)
@@ -57,13 +70,18 @@ ModeResult measureMode(const BenchMode& mode, const core::Scene& scene, const Or
         const ViewReference& view = reference.views[v];
         const core::VisibleSet& drawn = pass.emitted[v];
         std::uint64_t missed = view.unknownVisible;
+        ViewRecord record;
         for (const core::SceneObject& object : scene.objects)
         {
             const bool visible = view.exact.test(object.id);
             const bool emitted = drawn.test(object.id);
             const double triangles = double(object.triangleCount);
             if (emitted)
+            {
                 drawnTriangles += triangles;
+                ++record.objects;
+                record.triangles += object.triangleCount;
+            }
             if (visible)
             {
                 exactTriangles += triangles;
@@ -80,6 +98,10 @@ ModeResult measureMode(const BenchMode& mode, const core::Scene& scene, const Or
         result.metrics.falseInvisible += missed;
         if (missed != 0)
             ++result.viewsWithFalseInvisible;
+        record.falseInvisible = std::uint32_t(missed);
+        record.cullMs = v < pass.cullMs.size() ? pass.cullMs[v] : 0.0;
+        record.digest = setDigest(drawn);
+        result.perView.push_back(record);
     }
 
     ModeMetrics& m = result.metrics;

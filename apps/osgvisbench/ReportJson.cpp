@@ -106,7 +106,7 @@ void writeSweeps(std::ostream& out, const SweepReport& sweeps)
     for (std::size_t i = 0; i < sweeps.determinism.size(); ++i)
         out << (i ? ", " : "") << jsonString(sweeps.determinism[i].mode) << ": "
             << (sweeps.determinism[i].identicalAcrossThreads ? "true" : "false");
-    out << "}\n";
+    out << "},\n";
 }
 void writeMaskSweepRow(std::ostream& out, const MaskSweepRow& row)
 {
@@ -175,6 +175,55 @@ void writeThreading(std::ostream& out, const std::vector<ThreadingRow>& rows)
     }
     out << (rows.empty() ? "],\n" : "\n  ],\n");
 }
+template <typename Field> void writeViewColumn(std::ostream& out, const char* key, const std::vector<ViewRecord>& views,
+                                               Field field, bool last = false)
+{
+    out << "\"" << key << "\": [";
+    for (std::size_t v = 0; v < views.size(); ++v)
+        out << (v ? ", " : "") << field(views[v]);
+    out << (last ? "]" : "], ");
+}
+
+// One record per view, as columns: every array has one entry per view of the pass.
+void writeViewColumns(std::ostream& out, const std::vector<ViewRecord>& views)
+{
+    writeViewColumn(out, "view_objects", views, [](const ViewRecord& r) { return std::to_string(r.objects); });
+    writeViewColumn(out, "view_triangles", views, [](const ViewRecord& r) { return std::to_string(r.triangles); });
+    writeViewColumn(out, "view_false_invisible", views,
+                    [](const ViewRecord& r) { return std::to_string(r.falseInvisible); });
+    writeViewColumn(out, "view_cull_ms", views, [](const ViewRecord& r) { return jsonNumber(r.cullMs); });
+    writeViewColumn(
+        out, "view_digest", views,
+        [](const ViewRecord& r)
+        {
+            char hex[24];
+            std::snprintf(hex, sizeof hex, "\"%016llx\"", static_cast<unsigned long long>(r.digest));
+            return std::string(hex);
+        },
+        true);
+}
+
+void writePerView(std::ostream& out, const BenchReport& report)
+{
+    out << "  \"per_view\": {";
+    for (std::size_t i = 0; i < report.modes.size(); ++i)
+    {
+        out << (i ? ",\n" : "\n") << "    " << jsonString(report.modes[i].mode.name) << ": {";
+        writeViewColumns(out, report.modes[i].perView);
+        out << "}";
+    }
+    out << (report.modes.empty() ? "},\n" : "\n  },\n") << "  \"threading_per_view\": [";
+    for (std::size_t i = 0; i < report.threading.size(); ++i)
+    {
+        const ThreadingRow& row = report.threading[i];
+        out << (i ? ",\n" : "\n") << "    {\"mode\": " << jsonString(row.mode)
+            << ", \"threading\": " << jsonString(row.threading) << ", \"async\": " << (row.async ? "true" : "false")
+            << ", ";
+        writeViewColumns(out, row.perView);
+        out << "}";
+    }
+    out << (report.threading.empty() ? "]\n" : "\n  ]\n");
+}
 } // namespace
 
 void writeReportJson(std::ostream& out, const BenchReport& report)
@@ -206,6 +255,7 @@ void writeReportJson(std::ostream& out, const BenchReport& report)
     writeMaskSweep(out, report.maskSweep);
     writeThreading(out, report.threading);
     writeSweeps(out, report.sweeps);
+    writePerView(out, report);
     out << "}\n";
 }
 

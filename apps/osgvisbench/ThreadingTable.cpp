@@ -31,6 +31,7 @@ ThreadingRow measureRow(const BenchMode& mode, const std::string& threading, boo
     row.drawnFraction = measured.metrics.drawnFraction;
     row.cullMsMedian = measured.metrics.cullMsMedian;
     row.fps = measured.metrics.fps;
+    row.perView = measured.perView;
     const std::vector<double> sorted = sortedFinite(osgVisMs);
     row.osgVisMsMedian = median(sorted);
     row.osgVisMsP99 = percentile(sorted, 0.99);

@@ -35,6 +35,53 @@ const char* const modeFields[] = {"false_invisible",    "efficacy",       "effic
                                   "cull_ms_median",     "cull_ms_p99",    "fps",
                                   "speedup_vs_osg",     "fps_vs_exact"};
 
+// The entries of the array after `"key": [` in `json` (numbers or quoted strings, as written).
+std::vector<std::string> arrayField(const std::string& json, const std::string& key)
+{
+    std::vector<std::string> entries;
+    const std::size_t at = json.find("\"" + key + "\": [");
+    if (at == std::string::npos)
+        return entries;
+    const std::size_t begin = json.find('[', at) + 1, end = json.find(']', begin);
+    std::string entry;
+    for (std::size_t i = begin; i < end; ++i)
+        if (json[i] == ',')
+            entries.push_back(entry), entry.clear();
+        else if (json[i] != ' ')
+            entry += json[i];
+    if (!entry.empty())
+        entries.push_back(entry);
+    return entries;
+}
+
+// The `per_view` record of one mode: five arrays of one entry per view that agree with the mode's row.
+void expectPerViewRecord(const std::string& json, const std::string& mode, const std::string& row, double views,
+                         double sceneTriangles)
+{
+    const std::size_t perView = json.find("\"per_view\": {");
+    ASSERT_NE(perView, std::string::npos);
+    const std::size_t begin = json.find("\"" + mode + "\": {", perView);
+    ASSERT_NE(begin, std::string::npos) << mode;
+    const std::string record = json.substr(begin, json.find('}', begin) - begin);
+    const std::vector<std::string> triangles = arrayField(record, "view_triangles");
+    const std::vector<std::string> missed = arrayField(record, "view_false_invisible");
+    const std::vector<std::string> digests = arrayField(record, "view_digest");
+    ASSERT_EQ(triangles.size(), std::size_t(views)) << record;
+    ASSERT_EQ(arrayField(record, "view_objects").size(), std::size_t(views)) << record;
+    ASSERT_EQ(arrayField(record, "view_cull_ms").size(), std::size_t(views)) << record;
+    ASSERT_EQ(missed.size(), std::size_t(views)) << record;
+    ASSERT_EQ(digests.size(), std::size_t(views)) << record;
+    double drawn = 0.0, falseInvisible = 0.0;
+    for (std::size_t v = 0; v < triangles.size(); ++v)
+    {
+        drawn += std::stod(triangles[v]);
+        falseInvisible += std::stod(missed[v]);
+        EXPECT_EQ(digests[v].size(), 18u) << "16 hex digits in quotes: " << digests[v];
+    }
+    EXPECT_NEAR(drawn / (views * sceneTriangles), numberField(row, "drawn_fraction").value_or(-1), 1e-9) << record;
+    EXPECT_EQ(falseInvisible, numberField(row, "false_invisible").value_or(-1)) << record;
+}
+
 void expectBenchInvariants(const std::string& kind, const std::string& extraModes)
 {
     const std::filesystem::path json = scratchFile(kind + ".json");
@@ -77,6 +124,11 @@ void expectBenchInvariants(const std::string& kind, const std::string& extraMode
     EXPECT_LT(numberField(osg, "drawn_fraction").value_or(1), 1.0) << osg;
     EXPECT_LT(numberField(frustum, "drawn_fraction").value_or(1), 1.0) << frustum;
     EXPECT_GE(numberField(frustum, "overestimation").value_or(0), 1.0) << frustum;
+
+    const double sceneTriangles = numberField(text, "triangles").value_or(0);
+    expectPerViewRecord(text, "osg", osg, 8.0, sceneTriangles);
+    expectPerViewRecord(text, "frustum", frustum, 8.0, sceneTriangles);
+    expectPerViewRecord(text, "exact", exact, 8.0, sceneTriangles);
 }
 } // namespace
 
