@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace osgVis::viewer
+namespace osgVis::apps
 {
 core::Walk makeOrbitWalk(const core::Aabb& bounds, const AutoWalkOptions& options)
 {
@@ -45,4 +45,4 @@ core::Walk makeOrbitWalk(const core::Aabb& bounds, const AutoWalkOptions& option
     }
     return walk;
 }
-} // namespace osgVis::viewer
+} // namespace osgVis::apps

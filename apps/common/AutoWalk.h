@@ -2,10 +2,10 @@
 // A walk for a scene that comes without one: an orbit around the scene's bounds, looking at its
 // centre, with one near/far derived from the bounds so every view keeps the same depth range.
 // Uses core types only, so other apps (osgvisbench) can reuse it unchanged.
-#include <osgVis/core/Aabb.h>
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/geometry/Aabb.h>
+#include <osgVis/core/scene/Walk.h>
 
-namespace osgVis::viewer
+namespace osgVis::apps
 {
 struct AutoWalkOptions
 {
@@ -19,4 +19,4 @@ struct AutoWalkOptions
 
 // Throws std::invalid_argument for empty or non-finite bounds.
 core::Walk makeOrbitWalk(const core::Aabb& bounds, const AutoWalkOptions& options = {});
-} // namespace osgVis::viewer
+} // namespace osgVis::apps

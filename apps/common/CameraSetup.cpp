@@ -2,7 +2,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-namespace osgVis::viewer
+namespace osgVis::apps
 {
 // note: osg::Matrixd stores the transpose of the mathematical matrix row by row, which is the
 // same memory layout as GLM's column-major storage, so the conversion is a plain copy.
@@ -27,4 +27,4 @@ void applyWalkProjection(osg::Camera& camera, const core::WalkProjection& projec
     camera.setCullingMode(camera.getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
     camera.setProjectionMatrix(toOsgMatrix(projection.matrix(aspect)));
 }
-} // namespace osgVis::viewer
+} // namespace osgVis::apps

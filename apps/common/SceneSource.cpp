@@ -3,7 +3,7 @@
 #include "AutoWalk.h"
 
 #include <osgVis/VisibilityGroup>
-#include <osgVis/core/PvsFormat.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/gen/Generator.h>
 
 #include <osgDB/ReadFile>
@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <iostream>
 
-namespace osgVis::viewer
+namespace osgVis::apps
 {
 namespace
 {
@@ -120,9 +120,9 @@ osg::ref_ptr<osg::Node> readPvsScene(const std::string& path)
 
 } // namespace
 
-ViewerScene loadViewerScene(const ViewerOptions& options)
+LoadedScene loadScene(const SceneRequest& options)
 {
-    ViewerScene result;
+    LoadedScene result;
     if (!options.generateKind.empty())
     {
         gen::GeneratedScene generated;
@@ -184,4 +184,4 @@ ViewerScene loadViewerScene(const ViewerOptions& options)
     }
     return result;
 }
-} // namespace osgVis::viewer
+} // namespace osgVis::apps

@@ -1,25 +1,37 @@
 #pragma once
-// Where the viewer's scene and walk come from: a model file (with the walk beside it, a walk
-// given by --walk, or an automatic orbit), a baked `.pvs` file (the model it names, with its baked
-// cell-portal data registered for the cellportal modes) or a generated scene with its own walk.
-#include "Options.h"
+// Where an app's scene and walk come from (osgvisviewer and osgvisbench load them the same way): a
+// model file (with the walk beside it, a walk given by --walk, or an automatic orbit), a baked `.pvs`
+// file (the model it names, with its baked cell-portal data registered for the cellportal modes) or
+// a generated scene with its own walk.
 
 #include <osgVis/SceneExtractor>
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <osg/Node>
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
-namespace osgVis::viewer
+namespace osgVis::apps
 {
 struct SceneError : std::runtime_error
 {
     using std::runtime_error::runtime_error;
 };
 
-struct ViewerScene
+// What to load, as the apps' command lines give it.
+struct SceneRequest
+{
+    std::string scenePath;            // any OSG-readable model or a .pvs file; ignored with generateKind
+    std::string generateKind;         // a generator kind ("office", "city", ...) or empty
+    std::uint64_t triangles = 200000; // size knob of a generated scene
+    std::uint32_t seed = 1;           // seed of a generated scene
+    std::string walkPath;             // empty: SCENE's stem + ".walk", else an automatic walk
+    unsigned width = 0, height = 0;   // pixels; 0 keeps the walk's own size
+};
+
+struct LoadedScene
 {
     osg::ref_ptr<osg::Node> model;
     // The model's objects in the adapter's numbering (ids match a VisibilityGroup holding `model`).
@@ -32,6 +44,6 @@ struct ViewerScene
 // Throws SceneError with a message that names the file at fault (unreadable model, empty scene,
 // malformed walk with the parser's line message). For a `.pvs` scene it prints to stderr whether
 // the baked data are trusted (and why not).
-ViewerScene loadViewerScene(const ViewerOptions& options);
+LoadedScene loadScene(const SceneRequest& request);
 
-} // namespace osgVis::viewer
+} // namespace osgVis::apps

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-namespace osgVis::viewer
+namespace osgVis::apps
 {
 namespace
 {
@@ -60,4 +60,4 @@ std::vector<bool> parseOnOff(const std::string& flag, const std::string& text, b
                                  ", got '" + text + "'");
     return values;
 }
-} // namespace osgVis::viewer
+} // namespace osgVis::apps

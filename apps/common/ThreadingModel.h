@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace osgVis::viewer
+namespace osgVis::apps
 {
 struct ThreadingNameError : std::invalid_argument
 {
@@ -22,4 +22,4 @@ const char* threadingModelName(osgViewer::ViewerBase::ThreadingModel model);
 std::string threadingModelChoices();
 // "on" / "off" (also a comma list "on,off" when `list`); throws ThreadingNameError.
 std::vector<bool> parseOnOff(const std::string& flag, const std::string& text, bool list);
-} // namespace osgVis::viewer
+} // namespace osgVis::apps

@@ -1,6 +1,6 @@
 #include "BenchMode.h"
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <algorithm>
 #include <set>

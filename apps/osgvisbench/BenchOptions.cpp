@@ -1,6 +1,6 @@
 #include "BenchOptions.h"
 
-#include "../osgvisviewer/ThreadingModel.h"
+#include <ThreadingModel.h>
 
 #include <cstdlib>
 #include <sstream>
@@ -215,12 +215,12 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             {
                 const std::string text = value();
                 if (flag == "--async")
-                    options.async = viewer::parseOnOff(flag, text, true);
+                    options.async = apps::parseOnOff(flag, text, true);
                 else
                     for (const std::string& name : splitList(text, ','))
-                        options.threading.push_back(viewer::threadingModelName(viewer::parseThreadingModel(name)));
+                        options.threading.push_back(apps::threadingModelName(apps::parseThreadingModel(name)));
             }
-            catch (const viewer::ThreadingNameError& error)
+            catch (const apps::ThreadingNameError& error)
             {
                 throw UsageError(error.what());
             }

@@ -1,6 +1,6 @@
 #include "BenchRun.h"
 
-#include "../osgvisviewer/SceneSource.h"
+#include <SceneSource.h>
 #include "BenchViewer.h"
 #include "CullSweep.h"
 #include "DerivedWalks.h"
@@ -20,9 +20,9 @@
 
 namespace osgVis::bench
 {
-viewer::ViewerScene loadBenchScene(const BenchOptions& options)
+apps::LoadedScene loadBenchScene(const BenchOptions& options)
 {
-    viewer::ViewerOptions source;
+    apps::SceneRequest source;
     source.scenePath = options.sceneFile;
     source.generateKind = options.generateKind;
     source.triangles = options.triangles;
@@ -30,7 +30,7 @@ viewer::ViewerScene loadBenchScene(const BenchOptions& options)
     source.walkPath = options.walkFile;
     source.width = options.width;
     source.height = options.height;
-    return viewer::loadViewerScene(source);
+    return apps::loadScene(source);
 }
 
 namespace
@@ -44,7 +44,7 @@ bool runsMode(const std::vector<BenchMode>& modes, BenchMode::Kind kind)
 }
 
 // The oracle, then every mode rendered over `views` in one viewer, measured into report.modes.
-void renderModes(BenchReport& report, const viewer::ViewerScene& scene, const core::Walk& walk,
+void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core::Walk& walk,
                  const std::vector<BenchView>& views, const std::vector<BenchMode>& modes, const BenchOptions& options)
 {
     const unsigned supersample = options.supersample;
@@ -95,7 +95,7 @@ void renderModes(BenchReport& report, const viewer::ViewerScene& scene, const co
 
 BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& modes)
 {
-    const viewer::ViewerScene scene = loadBenchScene(options);
+    const apps::LoadedScene scene = loadBenchScene(options);
     core::Walk walk = subsampledWalk(scene.walk, options.views);
     if (options.cube)
         walk = cubeFaceWalk(walk);

@@ -5,15 +5,15 @@
 #include "BenchOptions.h"
 #include "BenchReport.h"
 
-#include "../osgvisviewer/SceneSource.h"
+#include <SceneSource.h>
 
 #include <vector>
 
 namespace osgVis::bench
 {
 // The scene and walk the command line names (a file or a generated kind), at the bench's size.
-viewer::ViewerScene loadBenchScene(const BenchOptions& options);
+apps::LoadedScene loadBenchScene(const BenchOptions& options);
 
-// Throws (viewer::SceneError, ViewerError, std::exception) with a message fit for the user.
+// Throws (apps::SceneError, ViewerError, std::exception) with a message fit for the user.
 BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& modes);
 } // namespace osgVis::bench

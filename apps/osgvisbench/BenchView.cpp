@@ -1,6 +1,6 @@
 #include "BenchView.h"
 
-#include "../osgvisviewer/CameraSetup.h"
+#include <CameraSetup.h>
 
 namespace osgVis::bench
 {
@@ -14,8 +14,8 @@ std::vector<BenchView> makeBenchViews(const core::Walk& walk)
         BenchView view;
         view.key = key;
         const core::Mat4 viewMatrix = key.viewMatrix();
-        view.view = viewer::toOsgMatrix(viewMatrix);
-        view.projection = viewer::toOsgMatrix(projection);
+        view.view = apps::toOsgMatrix(viewMatrix);
+        view.projection = apps::toOsgMatrix(projection);
         view.frustum = core::Frustum::fromMatrix(projection * viewMatrix);
         views.push_back(view);
     }

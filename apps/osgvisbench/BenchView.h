@@ -2,9 +2,9 @@
 // The views a bench run renders: every key of the (already subsampled or cube-expanded) walk, each
 // with the exact matrices every mode and the oracle use (one fixed projection, one fixed near/far
 // for the whole walk).
-#include <osgVis/core/Frustum.h>
-#include <osgVis/core/View.h>
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/geometry/Frustum.h>
+#include <osgVis/core/scene/View.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <osg/Matrixd>
 

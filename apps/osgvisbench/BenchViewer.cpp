@@ -1,6 +1,6 @@
 #include "BenchViewer.h"
 
-#include "../osgvisviewer/CameraSetup.h"
+#include <CameraSetup.h>
 
 #include <osgVis/oracle/OffscreenContext.h>
 
@@ -40,7 +40,7 @@ BenchViewer::BenchViewer(unsigned width, unsigned height, const core::WalkProjec
     camera->setDrawBuffer(GL_FRONT);
     camera->setReadBuffer(GL_FRONT);
     camera->setProjectionResizePolicy(osg::Camera::FIXED);
-    viewer::applyWalkProjection(*camera, projection, double(width) / double(height));
+    apps::applyWalkProjection(*camera, projection, double(width) / double(height));
     camera->setFinalDrawCallback(new FinishFrame);
     camera->getStats()->collectStats("rendering", true);
 

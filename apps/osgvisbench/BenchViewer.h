@@ -6,7 +6,7 @@
 // after frame() under every model: OSG returns only once the frame's cull is done.
 #include "BenchView.h"
 
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <osgUtil/RenderStage>
 #include <osgViewer/Viewer>

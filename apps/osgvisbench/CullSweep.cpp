@@ -4,7 +4,7 @@
 #include "DerivedWalks.h"
 #include "SampleStatistics.h"
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>

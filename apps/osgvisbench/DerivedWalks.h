@@ -2,7 +2,7 @@
 // The walks the bench derives from the scene's walk: fewer keys (--views), the six cube faces of
 // every key (--cube), and the observer moving several times faster (--speeds). Pure functions of
 // the walk; nothing here renders.
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 
 namespace osgVis::bench
 {

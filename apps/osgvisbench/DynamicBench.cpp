@@ -1,6 +1,6 @@
 #include "DynamicBench.h"
 
-#include "../osgvisviewer/SceneSource.h"
+#include <SceneSource.h>
 #include "BenchRun.h"
 #include "BenchViewer.h"
 #include "DerivedWalks.h"
@@ -131,7 +131,7 @@ BenchReport runDynamicBench(const BenchOptions& options, const std::vector<Bench
         if (mode.kind == BenchMode::Kind::OcclusionQueries || mode.kind == BenchMode::Kind::Exact)
             throw std::invalid_argument("--dynamic runs osg and module-chain modes only, not '" + mode.name + "'");
 
-    const viewer::ViewerScene scene = loadBenchScene(options);
+    const apps::LoadedScene scene = loadBenchScene(options);
     core::Walk walk = subsampledWalk(scene.walk, options.views);
     if (options.cube)
         walk = cubeFaceWalk(walk);

@@ -6,7 +6,7 @@
 // Everything is a function of the frame index and the seed, so every mode and the oracle see the
 // same scene at the same frame.
 #include <osgVis/SceneExtractor>
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <osg/Geode>
 #include <osg/Group>

@@ -3,7 +3,7 @@
 // stage's bins after the frame. Measuring what was emitted (rather than asking a module what it
 // answered) holds every mode to the same standard, OSG's own culling and occlusion queries included.
 #include <osgVis/SceneExtractor>
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 #include <osgUtil/RenderStage>
 

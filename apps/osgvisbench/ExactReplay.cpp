@@ -1,6 +1,6 @@
 #include "ExactReplay.h"
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 namespace osgVis::bench
 {

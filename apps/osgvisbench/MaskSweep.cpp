@@ -3,7 +3,7 @@
 #include "BenchView.h"
 #include "SampleStatistics.h"
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <algorithm>
 #include <array>

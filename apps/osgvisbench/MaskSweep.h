@@ -10,10 +10,10 @@
 #include "BenchOptions.h"
 #include "BenchReport.h"
 
-#include <osgVis/core/MaskModule.h>
-#include <osgVis/core/ModuleChain.h>
-#include <osgVis/core/Scene.h>
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/mask/MaskModule.h>
+#include <osgVis/core/module/ModuleChain.h>
+#include <osgVis/core/scene/Scene.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <optional>
 #include <string>

@@ -4,7 +4,7 @@
 #include "ModePass.h"
 #include "OracleReference.h"
 
-#include <osgVis/core/Scene.h>
+#include <osgVis/core/scene/Scene.h>
 
 namespace osgVis::bench
 {

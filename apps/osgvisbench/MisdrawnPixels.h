@@ -5,7 +5,7 @@
 #include "BenchReport.h"
 #include "OracleReference.h"
 
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 #include <cstdint>
 #include <string>

@@ -4,7 +4,7 @@
 #include "BenchViewer.h"
 #include "EmittedObjects.h"
 
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 #include <functional>
 #include <string>

@@ -5,7 +5,7 @@
 #include "BenchView.h"
 
 #include <osgVis/SceneExtractor>
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 #include <cstdint>
 #include <vector>

@@ -6,8 +6,8 @@
 #include "BenchMode.h"
 #include "BenchReport.h"
 
-#include <osgVis/core/Scene.h>
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Scene.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <vector>
 

@@ -7,7 +7,7 @@
 #include "ModePass.h"
 #include "SampleStatistics.h"
 
-#include "../osgvisviewer/ThreadingModel.h"
+#include <ThreadingModel.h>
 
 #include <osgVis/VisibilityGroup>
 
@@ -50,7 +50,7 @@ ThreadingRow measureRow(const BenchMode& mode, const std::string& threading, boo
 } // namespace
 
 std::vector<ThreadingRow> runThreadingTable(const BenchOptions& options, const std::vector<BenchMode>& modes,
-                                            const viewer::ViewerScene& scene, const core::Walk& walk,
+                                            const apps::LoadedScene& scene, const core::Walk& walk,
                                             const std::vector<BenchView>& views, const OracleReference& reference,
                                             const std::map<std::string, std::vector<core::VisibleSet>>& mainPasses)
 {
@@ -63,7 +63,7 @@ std::vector<ThreadingRow> runThreadingTable(const BenchOptions& options, const s
     for (const std::string& threading : threadings)
     {
         BenchViewer viewer(walk.width, walk.height, walk.projection, *scene.model,
-                           viewer::parseThreadingModel(threading));
+                           apps::parseThreadingModel(threading));
         for (const BenchMode& mode : modes)
         {
             if (mode.kind != BenchMode::Kind::OsgDefault && mode.kind != BenchMode::Kind::ModuleChain)

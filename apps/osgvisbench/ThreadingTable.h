@@ -7,9 +7,9 @@
 #include "BenchView.h"
 #include "OracleReference.h"
 
-#include "../osgvisviewer/SceneSource.h"
+#include <SceneSource.h>
 
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 #include <map>
 #include <string>
@@ -20,7 +20,7 @@ namespace osgVis::bench
 // `mainPasses` holds the main table's drawn sets per mode name (SingleThreaded, sync), which the
 // synchronous rows must reproduce view for view.
 std::vector<ThreadingRow> runThreadingTable(const BenchOptions& options, const std::vector<BenchMode>& modes,
-                                            const viewer::ViewerScene& scene, const core::Walk& walk,
+                                            const apps::LoadedScene& scene, const core::Walk& walk,
                                             const std::vector<BenchView>& views, const OracleReference& reference,
                                             const std::map<std::string, std::vector<core::VisibleSet>>& mainPasses);
 } // namespace osgVis::bench

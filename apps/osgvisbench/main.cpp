@@ -9,7 +9,7 @@
 #include "ReportJson.h"
 #include "ReportTable.h"
 
-#include "../osgvisviewer/SceneSource.h"
+#include <SceneSource.h>
 
 #include <PluginPaths.h>
 

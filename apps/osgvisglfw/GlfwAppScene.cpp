@@ -1,6 +1,6 @@
 #include "GlfwAppScene.h"
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 #include <osgVis/gen/BoxGeometry.h>
 
 #include <osg/Geode>

@@ -18,7 +18,7 @@
 #include <PluginPaths.h>
 
 #include <osgVis/Statistics>
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <osg/GL>
 #include <osgDB/WriteFile>

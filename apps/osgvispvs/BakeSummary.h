@@ -1,7 +1,7 @@
 #pragma once
 // What osgvispvs reports about a bake: the figures of the baked data (counted from the data
 // themselves), printed as text and optionally written as JSON.
-#include <osgVis/core/CellPortalBake.h>
+#include <osgVis/core/cellportal/CellPortalBake.h>
 
 #include <cstdint>
 #include <ostream>

@@ -1,7 +1,7 @@
 #pragma once
 // Command line of osgvispvs: the model to bake, where the .pvs goes, and the bake's knobs. Parsing
 // only: nothing here reads a file.
-#include <osgVis/core/CellPortalBake.h>
+#include <osgVis/core/cellportal/CellPortalBake.h>
 
 #include <stdexcept>
 #include <string>

@@ -7,7 +7,7 @@
 
 #include <osgVis/SceneExtractor>
 #include <osgVis/Version>
-#include <osgVis/core/PvsFormat.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 
 #include <osgDB/ReadFile>
 

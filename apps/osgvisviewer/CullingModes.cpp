@@ -1,6 +1,6 @@
 #include "CullingModes.h"
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <osg/NodeVisitor>
 

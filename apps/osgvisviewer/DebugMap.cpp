@@ -1,11 +1,11 @@
 #include "DebugMap.h"
 
-#include "CameraSetup.h"
+#include <CameraSetup.h>
 #include "CullingModes.h"
 #include "MapGeometry.h"
 
-#include <osgVis/core/ModuleRegistry.h>
-#include <osgVis/core/View.h>
+#include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/scene/View.h>
 
 #include <osg/BlendFunc>
 #include <osg/Geode>
@@ -208,7 +208,7 @@ void DebugMap::refresh(double time)
     const osg::Viewport& viewport = *observed->getViewport();
     followMode();
     const core::View view =
-        core::makeView(toCoreMatrix(observed->getViewMatrix()), toCoreMatrix(observed->getProjectionMatrix()), time,
+        core::makeView(apps::toCoreMatrix(observed->getViewMatrix()), apps::toCoreMatrix(observed->getProjectionMatrix()), time,
                        std::uint32_t(viewport.width()), std::uint32_t(viewport.height()));
     classify(view);
 

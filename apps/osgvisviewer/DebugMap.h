@@ -8,8 +8,8 @@
 #include "DebugRecordLayers.h"
 
 #include <osgVis/SceneExtractor>
-#include <osgVis/core/ModuleChain.h>
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/module/ModuleChain.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 #include <osg/Camera>
 #include <osg/Geometry>

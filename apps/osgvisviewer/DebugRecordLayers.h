@@ -4,7 +4,7 @@
 // partly occluded green, outside the frustum grey), the occluders it used as thick blue outlines,
 // and the eye's cell as a yellow rectangle, all flattened onto the map's z = 0 plane. Modules that
 // record nothing leave every layer empty, so the map looks as it does without them.
-#include <osgVis/core/DebugRecord.h>
+#include <osgVis/core/scene/DebugRecord.h>
 
 #include <osg/Geometry>
 

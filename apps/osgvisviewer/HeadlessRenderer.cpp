@@ -1,6 +1,6 @@
 #include "HeadlessRenderer.h"
 
-#include "CameraSetup.h"
+#include <CameraSetup.h>
 #include "CullingModes.h"
 #include "DebugMap.h"
 #include "FrameCapture.h"
@@ -65,7 +65,7 @@ bool writePng(const osg::Image* image, const std::string& path)
 }
 } // namespace
 
-int renderHeadless(const ViewerScene& scene, const ViewerOptions& options)
+int renderHeadless(const apps::LoadedScene& scene, const ViewerOptions& options)
 {
     if (!prepareOutputDirectory(options.headlessDir))
         return 1;
@@ -107,7 +107,7 @@ int renderHeadless(const ViewerScene& scene, const ViewerOptions& options)
     camera->setViewport(0, 0, int(width), int(height));
     camera->setDrawBuffer(GL_BACK);
     camera->setReadBuffer(GL_BACK);
-    applyWalkProjection(*camera, walk.projection, walk.aspect());
+    apps::applyWalkProjection(*camera, walk.projection, walk.aspect());
     osg::ref_ptr<FrameCapture> capture = new FrameCapture;
     camera->setFinalDrawCallback(capture.get());
     map.setObservedCamera(camera);
@@ -140,7 +140,7 @@ int renderHeadless(const ViewerScene& scene, const ViewerOptions& options)
     for (std::size_t i = 0; i < views; ++i)
     {
         const core::WalkKey& key = walk.keys[i];
-        camera->setViewMatrix(walkViewMatrix(key));
+        camera->setViewMatrix(apps::walkViewMatrix(key));
         osg::ref_ptr<osg::Image> frame = drawFrame(viewer, *capture, key.time);
         report.frames.push_back(readFrameFigures(*stats, viewer.getFrameStamp()->getFrameNumber()));
         if (!writePng(frame.get(), numberedPng(options.headlessDir, "frame", i)))

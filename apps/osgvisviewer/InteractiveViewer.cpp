@@ -1,9 +1,9 @@
 #include "InteractiveViewer.h"
 
 #include "BuildingTool.h"
-#include "CameraSetup.h"
+#include <CameraSetup.h>
 #include "CullingModes.h"
-#include "ThreadingModel.h"
+#include <ThreadingModel.h>
 #include "DebugMap.h"
 #include "WalkManipulator.h"
 
@@ -84,7 +84,7 @@ double defaultSpeed(const core::Aabb& bounds)
 }
 } // namespace
 
-int runInteractive(const ViewerScene& scene, const ViewerOptions& options)
+int runInteractive(const apps::LoadedScene& scene, const ViewerOptions& options)
 {
     const char* display = std::getenv("DISPLAY");
     if (!display || !*display)
@@ -100,11 +100,11 @@ int runInteractive(const ViewerScene& scene, const ViewerOptions& options)
 
     osgViewer::Viewer viewer;
     if (!options.threading.empty())
-        viewer.setThreadingModel(parseThreadingModel(options.threading));
+        viewer.setThreadingModel(apps::parseThreadingModel(options.threading));
     viewer.setSceneData(root.get());
     viewer.setUpViewInWindow(50, 50, int(scene.walk.width), int(scene.walk.height));
     osg::Camera* camera = viewer.getCamera();
-    applyWalkProjection(*camera, scene.walk.projection, scene.walk.aspect());
+    apps::applyWalkProjection(*camera, scene.walk.projection, scene.walk.aspect());
     map.setObservedCamera(camera);
 
     viewer.setCameraManipulator(

@@ -2,7 +2,7 @@
 // Building blocks of the debug map's drawing: flat layers in the z = 0 plane of the map's
 // orthographic camera, and the render bins that stack them (depth testing is off, so only the bin
 // order keeps one layer above another).
-#include <osgVis/core/Aabb.h>
+#include <osgVis/core/geometry/Aabb.h>
 
 #include <osg/Array>
 #include <osg/Geometry>

@@ -1,6 +1,6 @@
 #include "Options.h"
 
-#include "ThreadingModel.h"
+#include <ThreadingModel.h>
 
 #include <sstream>
 #include <vector>
@@ -79,11 +79,11 @@ ViewerOptions parseOptions(int argc, char** argv)
             try
             {
                 if (arg == "--async")
-                    options.async = parseOnOff(arg, value(), false).front();
+                    options.async = apps::parseOnOff(arg, value(), false).front();
                 else
-                    options.threading = threadingModelName(parseThreadingModel(value()));
+                    options.threading = apps::threadingModelName(apps::parseThreadingModel(value()));
             }
-            catch (const ThreadingNameError& error)
+            catch (const apps::ThreadingNameError& error)
             {
                 throw OptionsError(error.what());
             }
@@ -132,7 +132,7 @@ std::string usageText(const std::string& programName)
            "  --generate KIND    generate an office, city or tetra scene instead of loading one\n"
            "  --triangles N      size of the generated scene (default 200000)\n"
            "  --seed S           seed of the generated scene (default 1)\n"
-           "  --threading MODEL  OSG threading model of the window: " << threadingModelChoices() << "\n"
+           "  --threading MODEL  OSG threading model of the window: " << apps::threadingModelChoices() << "\n"
            "                     (default: OSG's choice; key n cycles them); --headless renders\n"
            "                     SingleThreaded so captures stay in step with their frame\n"
            "  --async on|off     asynchronous visibility (default off): a worker per view computes the\n"

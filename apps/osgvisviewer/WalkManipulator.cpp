@@ -1,6 +1,6 @@
 #include "WalkManipulator.h"
 
-#include "CameraSetup.h"
+#include <CameraSetup.h>
 
 #include <osg/ApplicationUsage>
 #include <osgViewer/View>
@@ -106,7 +106,7 @@ osg::Vec3d WalkManipulator::lookDirection() const
 osg::Matrixd WalkManipulator::getInverseMatrix() const
 {
     if (_playing)
-        return walkViewMatrix(_playKey);
+        return apps::walkViewMatrix(_playKey);
     return osg::Matrixd::lookAt(_eye, _eye + lookDirection(), WorldUp);
 }
 

@@ -2,7 +2,7 @@
 // First-person camera for walking through a scene: keys move the eye, a left-button drag turns the
 // head, `p` plays the walk back by its own time stamps and `r` records the eye path as a walk.
 // World up is +z (OSG's and the generator's convention).
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <osgGA/CameraManipulator>
 

@@ -3,11 +3,11 @@
 #include "HeadlessRenderer.h"
 #include "InteractiveViewer.h"
 #include "Options.h"
-#include "SceneSource.h"
+#include <SceneSource.h>
 
 #include <PluginPaths.h>
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <iostream>
 
@@ -40,10 +40,10 @@ int main(int argc, char** argv)
 
     try
     {
-        const ViewerScene scene = loadViewerScene(options);
+        const osgVis::apps::LoadedScene scene = osgVis::apps::loadScene(options);
         return options.headlessDir.empty() ? runInteractive(scene, options) : renderHeadless(scene, options);
     }
-    catch (const SceneError& e)
+    catch (const osgVis::apps::SceneError& e)
     {
         std::cerr << program << ": " << e.what() << "\n";
         return 1;

@@ -5,7 +5,7 @@
 //   "osgVis:pvs-trusted"                   the .pvs matches the model; its data are registered
 //   "osgVis:pvs-untrusted: <reason>"       corrupt .pvs, or baked for another model
 #include <osgVis/VisibilityGroup>
-#include <osgVis/core/CellPortalData.h>
+#include <osgVis/core/pvs/CellPortalData.h>
 
 #include <osg/Node>
 

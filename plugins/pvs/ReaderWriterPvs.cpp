@@ -15,8 +15,8 @@
 #include "PvsTrust.h"
 
 #include <osgVis/SceneExtractor>
-#include <osgVis/core/CellPortalModule.h>
-#include <osgVis/core/PvsFormat.h>
+#include <osgVis/core/cellportal/CellPortalModule.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 
 #include <osg/Notify>
 #include <osgDB/FileNameUtils>

@@ -1,7 +1,7 @@
 // osgVis::VisibilityGroup: its modes, asynchronous visibility and extraction options; children come
 // through osg::Group's wrapper.
 #include <osgVis/VisibilityGroup>
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <osg/Notify>
 #include <osgDB/InputStream>

@@ -5,7 +5,7 @@
 #include "BadModelFiles.h"
 #include "BenchJson.h"
 
-#include <osgVis/core/PvsFormat.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/gen/Generator.h>
 
 #include <osgDB/WriteFile>

@@ -3,8 +3,8 @@
 // core::DebugRecord, appends a fixed description of its "query" (one occluded node, one occluder
 // and an eye cell, at places the test chooses) without clearing the record first, so a test also
 // sees whether the caller clears it between queries.
-#include <osgVis/core/ModuleRegistry.h>
-#include <osgVis/core/VisibilityModule.h>
+#include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/module/VisibilityModule.h>
 
 #include <string>
 

@@ -3,8 +3,8 @@
 #include "BadModelFiles.h"
 #include "ViewerProcess.h"
 
-#include <osgVis/core/ModuleRegistry.h>
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // pixels of the `osg` baseline (same projection, fixed near/far, no small-feature culling).
 #include "ViewerProcess.h"
 
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 #include <osgVis/gen/Generator.h>
 
 #include <osg/Geode>

@@ -2,7 +2,7 @@
 // covering every direction, and faster observers (every S-th key, bouncing at the walk's ends).
 #include "../../apps/osgvisbench/DerivedWalks.h"
 
-#include <osgVis/core/Frustum.h>
+#include <osgVis/core/geometry/Frustum.h>
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // rasterizer (triangles per millisecond into 512² and 1024² masks), the max-depth pyramid build,
 // and the pyramid's rectangle test (boxes per millisecond). Screen shapes are building faces as a
 // city walk sees them: 5–200 px across, log-uniformly, anywhere on the mask.
-#include <osgVis/core/MaskRasterizer.h>
-#include <osgVis/core/OcclusionMask.h>
+#include <osgVis/core/mask/MaskRasterizer.h>
+#include <osgVis/core/mask/OcclusionMask.h>
 
 #include <benchmark/benchmark.h>
 

@@ -48,7 +48,7 @@ TEST(NoOsgHeaders, ScannerCatchesOffendingLines)
 
 TEST(NoOsgHeaders, ScannerAcceptsCoreIncludes)
 {
-    for (const char* good : {"#include <osgVis/core/Aabb.h>", "#include <glm/glm.hpp>", "#include <tbb/parallel_for.h>",
+    for (const char* good : {"#include <osgVis/core/geometry/Aabb.h>", "#include <glm/glm.hpp>", "#include <tbb/parallel_for.h>",
                              "#include <vector>", "// #include <osg/Node> (why the core does not)",
                              "#include \"OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh\""})
         EXPECT_TRUE(forbiddenIncludes(good).empty()) << good;

@@ -1,8 +1,8 @@
 // Drives the core with no renderer at all: its own scene, its own views, and a brute-force reference
 // that shares no code with the frustum module (the frustum is rebuilt from its eight corners and
 // boxes are tested with the separating-axis theorem).
-#include <osgVis/core/FrustumModule.h>
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/frustum/FrustumModule.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>

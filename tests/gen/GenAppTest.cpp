@@ -2,7 +2,7 @@
 // walk on disk otherwise.
 #include "AppProcess.h"
 
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 #include <osgVis/gen/SceneStats.h>
 
 #include <osgDB/ReadFile>

@@ -2,7 +2,7 @@
 // before it opens a window (so these tests need no display).
 #include "GlfwAppProcess.h"
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include "AppProcess.h"
 #include "BenchJson.h"
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 #include <osgVis/gen/Generator.h>
 
 #include <gtest/gtest.h>

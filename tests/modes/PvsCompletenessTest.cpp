@@ -3,7 +3,7 @@
 // (cell-to-object) and in the module's eye-to-object answer for that view. Scenes: a small office
 // and the multi-storey office (floors, ceilings and stairs of walls), plus slanted walls.
 #include <osgVis/SceneExtractor>
-#include <osgVis/core/CellPortalModule.h>
+#include <osgVis/core/cellportal/CellPortalModule.h>
 #include <osgVis/gen/Generator.h>
 #include <osgVis/oracle/IdBufferOracle.h>
 

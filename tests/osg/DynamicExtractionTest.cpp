@@ -12,7 +12,7 @@
 #include <osgVis/SceneExtractor>
 #include <osgVis/VisibilityGroup>
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <osg/Geode>
 #include <osg/MatrixTransform>

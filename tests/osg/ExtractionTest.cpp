@@ -8,7 +8,7 @@
 #include <osgVis/SceneExtractor>
 #include <osgVis/VisibilityGroup>
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <osg/BlendFunc>
 #include <osg/CullFace>

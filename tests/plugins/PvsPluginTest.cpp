@@ -2,8 +2,8 @@
 // back as a trusted cell-portal group, and every way the pair can go wrong.
 #include <osgVis/SceneExtractor>
 #include <osgVis/VisibilityGroup>
-#include <osgVis/core/CellPortalModule.h>
-#include <osgVis/core/PvsFormat.h>
+#include <osgVis/core/cellportal/CellPortalModule.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/gen/Generator.h>
 
 #include <osgDB/ReadFile>

@@ -2,7 +2,7 @@
 // The scene kinds as models (layout decided, tessellation density still free) with their walks.
 #include "Model.h"
 
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <cstdint>
 #include <string>

@@ -2,7 +2,7 @@
 // Walks through waypoints: a centripetal Catmull–Rom curve (it neither overshoots nor loops where
 // waypoints are unevenly spaced, so a path through a door stays in the door) sampled at a constant
 // speed and a fixed time step, looking a little ahead along the path.
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <osg/BoundingBox>
 #include <osg/Vec3d>

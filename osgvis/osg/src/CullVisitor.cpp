@@ -1,6 +1,6 @@
 #include <osgVis/CullVisitor>
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <osg/Camera>
 #include <osgUtil/RenderStage>

@@ -5,7 +5,7 @@
 // drawable that consults it.
 #include <osgVis/SceneExtractor>
 
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 #include <osg/Callback>
 

@@ -16,7 +16,7 @@
 #include <osg/PositionAttitudeTransform>
 #include <osg/Program>
 
-#include <osgVis/core/Scene.h>
+#include <osgVis/core/scene/Scene.h>
 
 #include <typeinfo>
 

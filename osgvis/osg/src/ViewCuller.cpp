@@ -1,7 +1,7 @@
 #include <osgVis/ViewCuller>
 
-#include <osgVis/core/ModuleRegistry.h>
-#include <osgVis/core/View.h>
+#include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/scene/View.h>
 
 #include <osg/Camera>
 #include <osg/FrameStamp>

@@ -1,5 +1,5 @@
-#include <osgVis/core/FrustumModule.h>
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/frustum/FrustumModule.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

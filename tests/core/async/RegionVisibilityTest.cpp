@@ -5,8 +5,8 @@
 #include "BoxScenes.h"
 #include "RayCastVisibility.h"
 
-#include <osgVis/core/AsyncVisibility.h>
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/async/AsyncVisibility.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

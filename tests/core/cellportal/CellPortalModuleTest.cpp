@@ -1,7 +1,7 @@
 // The cell-portal bake and module on hand-made scenes whose visibility is known: rooms in a row
 // joined by doors, a room around a corner, an open field (one cell), and the search budget.
-#include <osgVis/core/CellPortalModule.h>
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/cellportal/CellPortalModule.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include "BoxScenes.h"
 

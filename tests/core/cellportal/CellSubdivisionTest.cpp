@@ -13,7 +13,7 @@
 //         |           |##|           |
 //     y=0 +-----------+##+-----------+
 //         x=0      4.75  5.25       x=10
-#include <osgVis/core/CellSubdivision.h>
+#include <osgVis/core/cellportal/CellSubdivision.h>
 
 #include <gtest/gtest.h>
 

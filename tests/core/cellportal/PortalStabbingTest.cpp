@@ -1,7 +1,7 @@
 // Portal line stabbing: zero false rejections on thousands of sequences built around real lines
 // (and sightlines from real eyes), rejection of configurations no line passes, degenerate input,
 // and the measured looseness against a brute-force line search.
-#include <osgVis/core/PortalStabbing.h>
+#include <osgVis/core/cellportal/PortalStabbing.h>
 
 #include "AllocationCounter.h"
 

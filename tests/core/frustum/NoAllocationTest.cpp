@@ -1,8 +1,8 @@
 // The query phase allocates nothing after warm-up: a replaced global operator new counts.
 #include "AllocationCounter.h"
 
-#include <osgVis/core/FrustumModule.h>
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/frustum/FrustumModule.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <atomic>
 #include <cstdlib>

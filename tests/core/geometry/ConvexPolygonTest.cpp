@@ -1,4 +1,4 @@
-#include <osgVis/core/ConvexPolygon.h>
+#include <osgVis/core/geometry/ConvexPolygon.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-#include <osgVis/core/Frustum.h>
-#include <osgVis/core/View.h>
+#include <osgVis/core/geometry/Frustum.h>
+#include <osgVis/core/scene/View.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

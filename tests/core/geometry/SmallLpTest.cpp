@@ -1,6 +1,6 @@
 // The small dense LP behind the portal-stabbing tests: exact optima of textbook problems,
 // infeasible, unbounded and cycling-prone (degenerate) cases, equality rows and variable bounds.
-#include "SmallLp.h"
+#include <osgVis/core/geometry/SmallLp.h>
 
 #include <gtest/gtest.h>
 

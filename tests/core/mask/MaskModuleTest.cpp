@@ -9,8 +9,8 @@
 #include "BoxScenes.h"
 #include "RayCastVisibility.h"
 
-#include <osgVis/core/MaskModule.h>
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/mask/MaskModule.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

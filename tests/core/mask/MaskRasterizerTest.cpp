@@ -2,7 +2,7 @@
 // pixel, +inf at the horizon), and the key randomized property: every point of every covered
 // pixel (grown by the shrink) lies inside the occluder, nearer than the stored depth. Also checks
 // that the SSE2 and the scalar inner loops agree bit for bit (internal src/MaskRasterPaths.h).
-#include "MaskRasterPaths.h"
+#include "mask/MaskRasterPaths.h"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Coplanar pieces of different objects join into one occluder only where their union is exactly
 // a convex polygon: abutting or overlapping wall pieces do; an L, a gap or opposite faces do not.
-#include "CoplanarUnion.h"
+#include <osgVis/core/occluders/CoplanarUnion.h>
 
 #include <gtest/gtest.h>
 

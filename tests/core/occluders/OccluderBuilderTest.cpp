@@ -1,6 +1,6 @@
 // Occluder polygons from scene triangles: coplanar merging into convex polygons, links across
 // shared edges, eligibility flags, face-culling orientation, welding and degenerate input.
-#include <osgVis/core/OccluderBuilder.h>
+#include <osgVis/core/occluders/OccluderBuilder.h>
 
 #include <algorithm>
 #include <cmath>

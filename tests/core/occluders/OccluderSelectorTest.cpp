@@ -2,7 +2,7 @@
 // threshold inside its leaf), and the per-frame choice of the k best.
 #include "AllocationCounter.h"
 
-#include <osgVis/core/OccluderSelector.h>
+#include <osgVis/core/occluders/OccluderSelector.h>
 
 #include <algorithm>
 #include <atomic>

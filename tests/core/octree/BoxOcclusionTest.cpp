@@ -3,7 +3,7 @@
 // and a randomized cross-check against an independent segment-polygon test.
 #include "AllocationCounter.h"
 
-#include <osgVis/core/BoxOcclusion.h>
+#include <osgVis/core/octree/BoxOcclusion.h>
 
 #include <algorithm>
 #include <atomic>

@@ -1,7 +1,7 @@
 // The occlusion tree of the octree module's sweep (src/OcclusionTree.h): occluders that share no
 // edge hide together, margins open cracks where edges only touch, and a box is hidden only when
 // it lies behind the occluders. Eye at the origin looking along +y in every case.
-#include "OcclusionTree.h"
+#include "octree/OcclusionTree.h"
 #include "AllocationCounter.h"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // hide that single ones cannot, the cases where nothing may be hidden (near plane, eye on a
 // plane, inside geometry, orthographic views), the same answer at every thread count and with
 // or without temporal coherence, and a randomized check against CPU ray casting.
-#include <osgVis/core/ModuleRegistry.h>
-#include <osgVis/core/OctreeModule.h>
+#include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/octree/OctreeModule.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

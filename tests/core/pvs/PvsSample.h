@@ -7,9 +7,9 @@
 //   | 0 hall| 1     | 2     |     portal 0 at x = 1 (cells 0|1), portal 1 at x = 2 (cells 1|2)
 //   +-------+-------+-------+
 //   0       1       2       3
-#include "Checksum.h"
+#include "pvs/Checksum.h"
 
-#include <osgVis/core/PvsFormat.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 
 #include <cstdint>
 #include <cstring>

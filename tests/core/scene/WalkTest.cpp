@@ -1,4 +1,4 @@
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <cstdio>
 #include <fstream>

@@ -1,7 +1,7 @@
 #pragma once
 // Scenes of axial boxes for core tests: box objects with their triangles, and a small city of
 // blocks, buildings and street furniture.
-#include <osgVis/core/Scene.h>
+#include <osgVis/core/scene/Scene.h>
 
 #include <string>
 #include <vector>

@@ -10,8 +10,8 @@
 // whose culled faces neither show nor hide anything; OBJECT_TRANSPARENT objects are seen but do
 // not hide. A BVH over the triangles keeps a few-thousand-triangle scene at a few hundred
 // thousand rays per view in a fraction of a second.
-#include <osgVis/core/Scene.h>
-#include <osgVis/core/View.h>
+#include <osgVis/core/scene/Scene.h>
+#include <osgVis/core/scene/View.h>
 
 #include <glm/vec2.hpp>
 

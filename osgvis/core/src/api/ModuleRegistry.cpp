@@ -1,9 +1,9 @@
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
-#include <osgVis/core/CellPortalModule.h>
-#include <osgVis/core/FrustumModule.h>
-#include <osgVis/core/MaskModule.h>
-#include <osgVis/core/OctreeModule.h>
+#include <osgVis/core/cellportal/CellPortalModule.h>
+#include <osgVis/core/frustum/FrustumModule.h>
+#include <osgVis/core/mask/MaskModule.h>
+#include <osgVis/core/octree/OctreeModule.h>
 
 #include <map>
 #include <mutex>

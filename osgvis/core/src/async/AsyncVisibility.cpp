@@ -1,6 +1,6 @@
-#include <osgVis/core/AsyncVisibility.h>
+#include <osgVis/core/async/AsyncVisibility.h>
 
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <algorithm>
 #include <chrono>

@@ -2,8 +2,8 @@
 // Which objects each cell holds: an object is incident on every cell its bounds meet. Objects that
 // precomputed visibility may not judge (dynamic, unknown bounds, outside every cell) are listed as
 // kept everywhere.
-#include <osgVis/core/CellGraph.h>
-#include <osgVis/core/Scene.h>
+#include <osgVis/core/pvs/CellGraph.h>
+#include <osgVis/core/scene/Scene.h>
 
 #include <vector>
 

@@ -1,6 +1,6 @@
-#include <osgVis/core/CellPortalBake.h>
+#include <osgVis/core/cellportal/CellPortalBake.h>
 
-#include <osgVis/core/PortalStabbing.h>
+#include <osgVis/core/cellportal/PortalStabbing.h>
 
 #include "CellObjects.h"
 

@@ -1,6 +1,6 @@
-#include <osgVis/core/CellPortalModule.h>
+#include <osgVis/core/cellportal/CellPortalModule.h>
 
-#include <osgVis/core/PortalStabbing.h>
+#include <osgVis/core/cellportal/PortalStabbing.h>
 
 #include "CellObjects.h"
 

@@ -2,7 +2,7 @@
 // Walkthroughs" (SIGGRAPH '91): a kd-tree over the scene box split along the planes that opaque
 // axial faces cover most (union of the faces in the node's cross-section over its area), breadth
 // first so a cell budget spreads evenly; leaves are the cells, then the portals between them.
-#include <osgVis/core/CellSubdivision.h>
+#include <osgVis/core/cellportal/CellSubdivision.h>
 
 #include "PortalEnumeration.h"
 #include "SubdivisionRectSet.h"

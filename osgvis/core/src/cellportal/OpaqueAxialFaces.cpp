@@ -1,8 +1,8 @@
 // Opaque axial faces for cell subdivision: the object-space occluder polygons (same eligibility,
 // welding and coplanar merging), keeping only two-sided ones that are exactly axis-aligned
 // rectangles. One-sided polygons hide from one side only, so a cell boundary behind them is open.
-#include <osgVis/core/CellSubdivision.h>
-#include <osgVis/core/OccluderBuilder.h>
+#include <osgVis/core/cellportal/CellSubdivision.h>
+#include <osgVis/core/occluders/OccluderBuilder.h>
 
 #include <algorithm>
 #include <cmath>

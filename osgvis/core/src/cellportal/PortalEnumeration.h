@@ -1,7 +1,7 @@
 #pragma once
 // Portals of a cell graph: for every pair of face-adjacent cells, the part of their shared
 // rectangle that no opaque axial face in that plane covers, as disjoint axial rectangles.
-#include <osgVis/core/CellSubdivision.h>
+#include <osgVis/core/cellportal/CellSubdivision.h>
 
 namespace osgVis::core
 {

@@ -3,9 +3,9 @@
 // convex polygon iff its Plücker side operator with every edge has one sign, which is linear in
 // the line's Plücker coordinates; in 2-D the same test is exact. Every test here relaxes in the
 // safe direction only: a configuration some line realises is never rejected.
-#include <osgVis/core/PortalStabbing.h>
+#include <osgVis/core/cellportal/PortalStabbing.h>
 
-#include "SmallLp.h"
+#include <osgVis/core/geometry/SmallLp.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Sets of axis-aligned rectangles in one plane (u, v coordinates of an AxialRect): the area of their
 // union and the exact difference "a rectangle minus a union of rectangles" as few disjoint rectangles.
-#include <osgVis/core/AxialRect.h>
+#include <osgVis/core/geometry/AxialRect.h>
 
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Cells and portals a modeller stated with osgVis::Cell / osgVis::Portal markers, as a cell graph.
-#include <osgVis/core/CellSubdivision.h>
+#include <osgVis/core/cellportal/CellSubdivision.h>
 
 namespace osgVis::core
 {

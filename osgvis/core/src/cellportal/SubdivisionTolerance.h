@@ -1,7 +1,7 @@
 #pragma once
 // The one length below which cell subdivision treats two coordinates as equal: a little above what
 // single-precision triangle storage moves a vertex, far below any real gap (a 1 cm slit survives).
-#include <osgVis/core/Aabb.h>
+#include <osgVis/core/geometry/Aabb.h>
 
 #include <algorithm>
 #include <cmath>

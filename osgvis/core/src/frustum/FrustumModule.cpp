@@ -1,6 +1,6 @@
 // Hierarchical view-frustum culling with plane masking (Assarsson & Möller, "Optimized View Frustum
 // Culling Algorithms for Bounding Boxes", 2000): a node inside a plane stops testing against it below.
-#include <osgVis/core/FrustumModule.h>
+#include <osgVis/core/frustum/FrustumModule.h>
 
 namespace osgVis::core
 {

@@ -1,4 +1,4 @@
-#include <osgVis/core/Aabb.h>
+#include <osgVis/core/geometry/Aabb.h>
 
 #include <cmath>
 

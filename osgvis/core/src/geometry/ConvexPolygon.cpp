@@ -1,8 +1,8 @@
 // Newell's normal (as in Sutherland, Sproull & Schumacker 1974) and Sutherland–Hodgman clipping
 // (Sutherland & Hodgman, "Reentrant Polygon Clipping", 1974) against one plane.
-#include <osgVis/core/ConvexPolygon.h>
+#include <osgVis/core/geometry/ConvexPolygon.h>
 
-#include <osgVis/core/Aabb.h>
+#include <osgVis/core/geometry/Aabb.h>
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // Plane extraction after Gribb & Hartmann, "Fast Extraction of Viewing Frustum Planes from the
 // World-View-Projection Matrix" (2001); box test with the p-/n-vertex of each plane.
-#include <osgVis/core/Frustum.h>
+#include <osgVis/core/geometry/Frustum.h>
 
 namespace osgVis::core
 {

@@ -1,4 +1,4 @@
-#include <osgVis/core/Plane.h>
+#include <osgVis/core/geometry/Plane.h>
 
 #include <cmath>
 

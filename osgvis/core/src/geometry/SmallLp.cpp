@@ -1,4 +1,4 @@
-#include "SmallLp.h"
+#include <osgVis/core/geometry/SmallLp.h>
 
 #include <algorithm>
 #include <cassert>

@@ -1,4 +1,4 @@
-#include <osgVis/core/MaskKdTree.h>
+#include <osgVis/core/mask/MaskKdTree.h>
 
 #include <algorithm>
 #include <limits>

@@ -1,11 +1,11 @@
-#include <osgVis/core/MaskModule.h>
+#include <osgVis/core/mask/MaskModule.h>
 
 #include "MaskOccluderGroups.h"
 #include "MaskOccluderSelection.h"
 #include "MaskProjection.h"
 
-#include <osgVis/core/MaskRasterizer.h>
-#include <osgVis/core/OccluderBuilder.h>
+#include <osgVis/core/mask/MaskRasterizer.h>
+#include <osgVis/core/occluders/OccluderBuilder.h>
 
 #include <algorithm>
 #include <chrono>

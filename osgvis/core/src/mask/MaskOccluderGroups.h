@@ -6,7 +6,7 @@
 // so it is left out; so is a one-sided polygon seen from behind.
 #include "MaskProjection.h"
 
-#include <osgVis/core/OccluderPolygon.h>
+#include <osgVis/core/occluders/OccluderPolygon.h>
 
 #include <vector>
 

@@ -10,8 +10,8 @@
 // Multiplying by the distance prefers occluders that keep δ (and so the stamps' lifetime) large.
 #include "MaskProjection.h"
 
-#include <osgVis/core/MaskKdTree.h>
-#include <osgVis/core/MaskModule.h>
+#include <osgVis/core/mask/MaskKdTree.h>
+#include <osgVis/core/mask/MaskModule.h>
 
 #include <vector>
 

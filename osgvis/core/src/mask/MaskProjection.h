@@ -2,10 +2,10 @@
 // The critical frame's camera as the mask sees it: world → eye → mask coordinates, the depth plane
 // of an occluder polygon over the mask, the clip planes that bound what gets rasterized, and the
 // image-shift bound that turns the shrinkage Δ into the eye's freedom δ (docs/mask.md).
-#include <osgVis/core/Aabb.h>
-#include <osgVis/core/MaskRasterizer.h>
-#include <osgVis/core/Plane.h>
-#include <osgVis/core/View.h>
+#include <osgVis/core/geometry/Aabb.h>
+#include <osgVis/core/mask/MaskRasterizer.h>
+#include <osgVis/core/geometry/Plane.h>
+#include <osgVis/core/scene/View.h>
 
 #include <array>
 #include <optional>

@@ -3,7 +3,7 @@
 // portable scalar code doing the same float operations lane by lane. Both are reachable here so a
 // test can check that they agree bit for bit; rasterizeOccluderGroup() takes the SSE2 one where
 // the compiler targets it.
-#include <osgVis/core/MaskRasterizer.h>
+#include <osgVis/core/mask/MaskRasterizer.h>
 
 #include <cstddef>
 

@@ -1,4 +1,4 @@
-#include <osgVis/core/ModuleChain.h>
+#include <osgVis/core/module/ModuleChain.h>
 
 #include <chrono>
 

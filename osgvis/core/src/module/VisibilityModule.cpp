@@ -1,4 +1,4 @@
-#include <osgVis/core/VisibilityModule.h>
+#include <osgVis/core/module/VisibilityModule.h>
 
 namespace osgVis::core
 {

@@ -1,6 +1,6 @@
 #include "BoundaryLoop.h"
 
-#include <osgVis/core/Aabb.h>
+#include <osgVis/core/geometry/Aabb.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // Geometry of a planar boundary loop given as welded vertex ids (counter-clockwise around a
 // normal): how it turns at each vertex, which vertices are only straight-line points, and whether
 // the outline is convex. Shared by the coplanar merge and the final output of the occluder builder.
-#include <osgVis/core/Math.h>
+#include <osgVis/core/geometry/Math.h>
 
 #include <cstdint>
 #include <vector>

@@ -3,7 +3,7 @@
 // through OpenMesh half-edge connectivity) and lie in one plane grow into a region; a region whose
 // outline is convex becomes one polygon, any other is cut into convex pieces by joining
 // neighbouring pieces while their union stays convex.
-#include <osgVis/core/Math.h>
+#include <osgVis/core/geometry/Math.h>
 
 #include <OpenMesh/Core/Mesh/PolyConnectivity.hh>
 

@@ -1,4 +1,4 @@
-#include "CoplanarUnion.h"
+#include <osgVis/core/occluders/CoplanarUnion.h>
 
 #include <algorithm>
 #include <cmath>

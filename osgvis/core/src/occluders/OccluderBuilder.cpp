@@ -1,6 +1,6 @@
 // Occluder polygons from scene geometry: weld, connect (OpenMesh), merge coplanar neighbours into
 // convex polygons, then link polygons across the edges they share.
-#include <osgVis/core/OccluderBuilder.h>
+#include <osgVis/core/occluders/OccluderBuilder.h>
 
 #include "BoundaryLoop.h"
 #include "CoplanarMerger.h"

@@ -1,6 +1,6 @@
 // Area-angle occluder choice over an octree of eye cells (after Coorg & Teller's dynamic
 // selection): per cell, the polygons that can look large enough from somewhere inside it.
-#include <osgVis/core/OccluderSelector.h>
+#include <osgVis/core/occluders/OccluderSelector.h>
 
 #include <algorithm>
 #include <cmath>

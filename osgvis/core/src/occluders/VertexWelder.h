@@ -1,7 +1,7 @@
 #pragma once
 // Joins vertices closer than a tolerance into one id, through a hash grid whose cells are much
 // wider than the tolerance, so a query mostly looks at its own cell only.
-#include <osgVis/core/Math.h>
+#include <osgVis/core/geometry/Math.h>
 
 #include <cstdint>
 #include <unordered_map>

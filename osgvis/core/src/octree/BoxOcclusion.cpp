@@ -1,4 +1,4 @@
-#include <osgVis/core/BoxOcclusion.h>
+#include <osgVis/core/octree/BoxOcclusion.h>
 
 #include <algorithm>
 #include <array>

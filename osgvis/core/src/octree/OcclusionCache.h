@@ -3,7 +3,7 @@
 // occluders it met in recent frames, which do not depend on the eye, and the occluder that
 // decided it last. The next frame re-checks the eye against those planes instead of rebuilding
 // them, and tries the last deciding occluder first.
-#include <osgVis/core/BoxOcclusion.h>
+#include <osgVis/core/octree/BoxOcclusion.h>
 
 #include <cstdint>
 #include <vector>

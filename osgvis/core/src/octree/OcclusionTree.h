@@ -14,8 +14,8 @@
 // the clipping put on a line stays within rounding of it (clipping interpolates along edges, and
 // the distance to the cutting line is affine there), far inside the touch tolerance, and clipping
 // keeps vertices near a line on both sides, so a needed line is never left out.
-#include <osgVis/core/Aabb.h>
-#include <osgVis/core/Plane.h>
+#include <osgVis/core/geometry/Aabb.h>
+#include <osgVis/core/geometry/Plane.h>
 
 #include <glm/vec2.hpp>
 

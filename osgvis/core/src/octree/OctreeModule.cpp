@@ -4,9 +4,9 @@
 // hidden at once, and only the occluders that partly hide a node passed on to its children.
 // The top of the tree is walked serially; the subtrees below a fixed frontier run in parallel
 // with an affinity partitioner, so a subtree tends to stay on the thread that has its caches.
-#include <osgVis/core/OctreeModule.h>
+#include <osgVis/core/octree/OctreeModule.h>
 
-#include "CoplanarUnion.h"
+#include <osgVis/core/occluders/CoplanarUnion.h>
 #include "OcclusionCache.h"
 #include "OcclusionTree.h"
 

@@ -1,6 +1,6 @@
 // Point and box location in a cell graph: kd-tree descent, taking both children where the query
 // comes within tolerance of the split, so points on a shared boundary find every cell they touch.
-#include <osgVis/core/CellGraph.h>
+#include <osgVis/core/pvs/CellGraph.h>
 
 #include <cmath>
 

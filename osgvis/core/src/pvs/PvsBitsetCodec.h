@@ -5,7 +5,7 @@
 // and an empty or full set takes two or three bytes whatever its capacity.
 #include "PvsByteStream.h"
 
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 namespace osgVis::core
 {

@@ -3,7 +3,7 @@
 // integers, IEEE-754 doubles by bit pattern, LEB128 varints and length-prefixed strings, written
 // value by value whatever the host's byte order. The reader checks every byte it takes against the
 // end it was given and names the part of the file it was reading when bytes run out.
-#include <osgVis/core/PvsFormat.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -1,5 +1,5 @@
 // The `.pvs` file, version 1; docs/pvs-format.md is the byte-level description this code follows.
-#include <osgVis/core/PvsFormat.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 
 #include "Checksum.h"
 #include "PvsBitsetCodec.h"

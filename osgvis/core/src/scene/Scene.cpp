@@ -1,4 +1,4 @@
-#include <osgVis/core/Scene.h>
+#include <osgVis/core/scene/Scene.h>
 
 namespace osgVis::core
 {

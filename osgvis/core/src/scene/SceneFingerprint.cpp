@@ -1,4 +1,4 @@
-#include <osgVis/core/CellPortalData.h>
+#include <osgVis/core/scene/SceneFingerprint.h>
 
 #include <cstring>
 

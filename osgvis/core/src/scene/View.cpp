@@ -1,4 +1,4 @@
-#include <osgVis/core/View.h>
+#include <osgVis/core/scene/View.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 #include <algorithm>
 #include <bitset>

@@ -1,4 +1,4 @@
-#include <osgVis/core/KdTree.h>
+#include <osgVis/core/spatial/KdTree.h>
 
 #include <algorithm>
 

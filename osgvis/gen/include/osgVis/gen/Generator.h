@@ -3,7 +3,7 @@
 // papers' benchmarks, scaled by a triangle budget, plus a set of small adversarial scenes that every
 // culling mode must pass. The same options give byte-identical geometry on every machine.
 // Presets (layout, tessellation, walk speed, projection) are frozen: see docs/scenes.md.
-#include <osgVis/core/Walk.h>
+#include <osgVis/core/scene/Walk.h>
 
 #include <osg/Group>
 #include <osg/ref_ptr>

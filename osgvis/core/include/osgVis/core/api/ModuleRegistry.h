@@ -2,7 +2,7 @@
 /// @file
 /// Creates visibility modules by mode name. Later modules register here so every app and test
 /// reaches them by name.
-#include <osgVis/core/ModuleChain.h>
+#include <osgVis/core/module/ModuleChain.h>
 
 #include <functional>
 #include <memory>

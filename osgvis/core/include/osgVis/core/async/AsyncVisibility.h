@@ -10,8 +10,8 @@
 ///
 /// Threads: one worker per object. cull(), setScene() and sceneReplaced() belong to one thread at
 /// a time (the view's cull thread); statistics() may be called from anywhere.
-#include <osgVis/core/ModuleChain.h>
-#include <osgVis/core/ViewRegion.h>
+#include <osgVis/core/module/ModuleChain.h>
+#include <osgVis/core/scene/ViewRegion.h>
 
 #include <condition_variable>
 #include <cstdint>

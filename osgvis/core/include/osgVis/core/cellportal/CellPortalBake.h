@@ -3,8 +3,8 @@
 /// The cell-portal bake: subdivision, then per source cell a depth-first search over portal
 /// sequences that keeps a sequence while a sightline can stab it (the stab tree), cell-to-cell
 /// visibility, and cell-to-object visibility from the funnel beyond each sequence.
-#include <osgVis/core/CellPortalData.h>
-#include <osgVis/core/CellSubdivision.h>
+#include <osgVis/core/pvs/CellPortalData.h>
+#include <osgVis/core/cellportal/CellSubdivision.h>
 
 #include <functional>
 

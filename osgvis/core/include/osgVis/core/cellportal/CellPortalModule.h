@@ -9,8 +9,8 @@
 /// Modes: "cellportal" (eye-to-object) and, for the paper's progressive table, "cellportal-cells"
 /// (objects in cells visible from the eye's cell), "cellportal-pvs" (the eye cell's PVS) and
 /// "cellportal-eyecells" (objects in cells the eye sees).
-#include <osgVis/core/CellPortalBake.h>
-#include <osgVis/core/VisibilityModule.h>
+#include <osgVis/core/cellportal/CellPortalBake.h>
+#include <osgVis/core/module/VisibilityModule.h>
 
 #include <memory>
 

@@ -6,8 +6,8 @@
 /// rectangles. Non-axial geometry never occludes here (it only enlarges visibility), so any model
 /// subdivides. Cells and portals stated with osgVis::Cell / osgVis::Portal markers (Scene::cells,
 /// Scene::portals) are taken as they are instead.
-#include <osgVis/core/CellGraph.h>
-#include <osgVis/core/Scene.h>
+#include <osgVis/core/pvs/CellGraph.h>
+#include <osgVis/core/scene/Scene.h>
 
 namespace osgVis::core
 {

@@ -3,8 +3,8 @@
 /// Line-stabbing geometry of cell-and-portal visibility (Teller & Séquin) for axial portals. Every
 /// test is conservative: it may answer "stabbable"/"meets" for a configuration no line realises,
 /// never the reverse. Tolerances are in world units.
-#include <osgVis/core/AxialRect.h>
-#include <osgVis/core/Plane.h>
+#include <osgVis/core/geometry/AxialRect.h>
+#include <osgVis/core/geometry/Plane.h>
 
 #include <cstddef>
 #include <vector>

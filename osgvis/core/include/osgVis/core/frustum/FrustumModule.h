@@ -1,8 +1,8 @@
 #pragma once
 /// @file
 /// Hierarchical view-frustum culling over a kd-tree: the baseline every occlusion module must beat.
-#include <osgVis/core/KdTree.h>
-#include <osgVis/core/VisibilityModule.h>
+#include <osgVis/core/spatial/KdTree.h>
+#include <osgVis/core/module/VisibilityModule.h>
 
 namespace osgVis::core
 {

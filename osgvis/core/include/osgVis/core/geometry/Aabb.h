@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Axis-aligned bounding box. An empty box has min > max and contains nothing.
-#include <osgVis/core/Math.h>
+#include <osgVis/core/geometry/Math.h>
 
 #include <limits>
 

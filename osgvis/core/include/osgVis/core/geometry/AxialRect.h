@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// A rectangle lying in an axis-aligned plane (a cell face, a portal, an opaque axial face).
-#include <osgVis/core/Aabb.h>
+#include <osgVis/core/geometry/Aabb.h>
 
 #include <cstdint>
 

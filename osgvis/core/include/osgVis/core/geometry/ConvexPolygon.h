@@ -2,7 +2,7 @@
 /// @file
 /// Planar convex polygon (counter-clockwise seen from the side its normal points to), with
 /// Sutherland–Hodgman clipping against a plane.
-#include <osgVis/core/Plane.h>
+#include <osgVis/core/geometry/Plane.h>
 
 #include <vector>
 

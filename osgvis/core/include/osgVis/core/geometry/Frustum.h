@@ -2,8 +2,8 @@
 /// @file
 /// View frustum as six inward-facing planes, built from a view-projection matrix (OpenGL clip
 /// conventions: -w <= x,y,z <= w). Works for perspective, off-centre and orthographic projections.
-#include <osgVis/core/Aabb.h>
-#include <osgVis/core/Plane.h>
+#include <osgVis/core/geometry/Aabb.h>
+#include <osgVis/core/geometry/Plane.h>
 
 #include <array>
 

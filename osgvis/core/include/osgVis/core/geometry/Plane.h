@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Oriented plane n·p + d = 0; positive distance is the "inside" (kept) half-space.
-#include <osgVis/core/Math.h>
+#include <osgVis/core/geometry/Math.h>
 
 namespace osgVis::core
 {

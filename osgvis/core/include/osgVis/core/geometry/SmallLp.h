@@ -1,11 +1,12 @@
 #pragma once
-// A small dense linear program: maximize c·x subject to A x <= b, equality rows and variable
-// bounds, for a handful of variables (<= 8) and up to a few hundred rows. Dictionary simplex
-// (Chvátal, "Linear Programming", ch. 2-3) with an auxiliary variable for the first phase. Pivots
-// take the largest reduced cost and, among rows nearly tied in the ratio test, the largest pivot
-// (Harris) for accuracy; after a run of degenerate pivots the rules become Bland's, which cannot
-// cycle. Buffers are kept between solves, so a reused solver allocates nothing once warm.
-// Coefficients should be of order one (callers normalise); the pivot tolerance is absolute.
+/// @file
+/// A small dense linear program: maximize c·x subject to A x <= b, equality rows and variable
+/// bounds, for a handful of variables (<= 8) and up to a few hundred rows. Dictionary simplex
+/// (Chvátal, "Linear Programming", ch. 2-3) with an auxiliary variable for the first phase. Pivots
+/// take the largest reduced cost and, among rows nearly tied in the ratio test, the largest pivot
+/// (Harris) for accuracy; after a run of degenerate pivots the rules become Bland's, which cannot
+/// cycle. Buffers are kept between solves, so a reused solver allocates nothing once warm.
+/// Coefficients should be of order one (callers normalise); the pivot tolerance is absolute.
 #include <cstddef>
 #include <limits>
 #include <vector>

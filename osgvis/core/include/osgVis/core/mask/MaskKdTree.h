@@ -23,8 +23,8 @@
 ///
 /// An object that is not in the tree (left out, removed, unknown id) is never hidden(): the owner
 /// must draw what the tree cannot vouch for.
-#include <osgVis/core/Aabb.h>
-#include <osgVis/core/Scene.h>
+#include <osgVis/core/geometry/Aabb.h>
+#include <osgVis/core/scene/Scene.h>
 
 #include <cstdint>
 #include <vector>

@@ -13,9 +13,9 @@
 /// Modes: "mask" shrinks each occluder group's projection on its own (conservative for every eye in
 /// the δ-ball); "mask-approx" shrinks the fused union as the paper does (faster, bounded leaks:
 /// approximate); "mask-distance" is "mask" with the plain distance measure for occluder selection.
-#include <osgVis/core/MaskKdTree.h>
-#include <osgVis/core/OcclusionMask.h>
-#include <osgVis/core/VisibilityModule.h>
+#include <osgVis/core/mask/MaskKdTree.h>
+#include <osgVis/core/mask/OcclusionMask.h>
+#include <osgVis/core/module/VisibilityModule.h>
 
 #include <memory>
 #include <string>

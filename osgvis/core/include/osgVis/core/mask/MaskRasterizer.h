@@ -14,7 +14,7 @@
 /// Then P lies inside the union (a point of P outside it would sit beyond an outline edge of a
 /// polygon P touches). Growing P by `shrink` is the same as shrinking the group's union by that
 /// many pixels, which the conservative `mask` mode uses for temporal coherence.
-#include <osgVis/core/OcclusionMask.h>
+#include <osgVis/core/mask/OcclusionMask.h>
 
 #include <glm/vec2.hpp>
 

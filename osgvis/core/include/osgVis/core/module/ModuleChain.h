@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Modules composed in sequence: each stage only refines the previous stage's answer.
-#include <osgVis/core/VisibilityModule.h>
+#include <osgVis/core/module/VisibilityModule.h>
 
 #include <memory>
 #include <string>

@@ -2,10 +2,10 @@
 /// @file
 /// The visibility API between a renderer and a visibility algorithm: a scene description the module
 /// keeps between frames, a view in, a visible set out, notification when the scene changes.
-#include <osgVis/core/DebugRecord.h>
-#include <osgVis/core/View.h>
-#include <osgVis/core/ViewRegion.h>
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/scene/DebugRecord.h>
+#include <osgVis/core/scene/View.h>
+#include <osgVis/core/scene/ViewRegion.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 #include <memory>
 #include <vector>

@@ -1,9 +1,10 @@
 #pragma once
-// Larger occluders from coplanar polygons of different objects: two wall pieces that abut or
-// overlap in one plane (adjacent rooms' walls, a wall and its neighbour's corner) hide together
-// what neither hides alone, but share no edge to fuse through. Where their union is exactly a
-// convex polygon, that union is an occluder of its own.
-#include <osgVis/core/OccluderPolygon.h>
+/// @file
+/// Larger occluders from coplanar polygons of different objects: two wall pieces that abut or
+/// overlap in one plane (adjacent rooms' walls, a wall and its neighbour's corner) hide together
+/// what neither hides alone, but share no edge to fuse through. Where their union is exactly a
+/// convex polygon, that union is an occluder of its own.
+#include <osgVis/core/occluders/OccluderPolygon.h>
 
 #include <vector>
 

@@ -3,7 +3,7 @@
 /// Turns a scene into occluder polygons: welds identical vertices, finds shared edges (OpenMesh
 /// half-edge connectivity), merges coplanar adjacent triangles into convex polygons so tessellated
 /// walls act as large occluders, and links polygons that share an edge.
-#include <osgVis/core/OccluderPolygon.h>
+#include <osgVis/core/occluders/OccluderPolygon.h>
 
 namespace osgVis::core
 {

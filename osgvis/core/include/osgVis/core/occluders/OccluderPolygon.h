@@ -3,8 +3,8 @@
 /// Occluders of the object-space methods: convex planar polygons taken from the scene's own opaque
 /// geometry (coplanar neighbouring triangles merged) and from stated occluders, with their
 /// neighbours across shared edges so that connected polygons can fuse.
-#include <osgVis/core/Plane.h>
-#include <osgVis/core/Scene.h>
+#include <osgVis/core/geometry/Plane.h>
+#include <osgVis/core/scene/Scene.h>
 
 #include <cstdint>
 #include <vector>

@@ -5,8 +5,8 @@
 /// large. Space is divided into leaf cells; each leaf lists its potential occluders, the polygons
 /// whose metric can exceed the threshold from some point of the leaf; per frame the k best of the
 /// eye leaf's list, at the eye's exact position, are the actual occluders.
-#include <osgVis/core/Aabb.h>
-#include <osgVis/core/OccluderPolygon.h>
+#include <osgVis/core/geometry/Aabb.h>
+#include <osgVis/core/occluders/OccluderPolygon.h>
 
 #include <cstdint>
 #include <vector>

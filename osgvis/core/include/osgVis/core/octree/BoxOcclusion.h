@@ -14,8 +14,8 @@
 ///   Partial:   anything else (the occluder may hide part of the box; children may be hidden).
 /// Invisible is exact up to a safety margin: whenever the answer is Invisible the whole box is
 /// hidden. Visible and Partial may be pessimistic (they only cost culling, never correctness).
-#include <osgVis/core/Aabb.h>
-#include <osgVis/core/OccluderPolygon.h>
+#include <osgVis/core/geometry/Aabb.h>
+#include <osgVis/core/occluders/OccluderPolygon.h>
 
 #include <cmath>
 #include <cstdint>

@@ -9,11 +9,11 @@
 /// Modes: "octree" (connected occluders fuse, then an occlusion-tree sweep fuses those that share
 /// no edge), "octree-paper" (the paper's method: no sweep) and "octree-single" (each occluder
 /// tested on its own, the paper's comparison; no sweep).
-#include <osgVis/core/BoxOcclusion.h>
-#include <osgVis/core/KdTree.h>
-#include <osgVis/core/OccluderBuilder.h>
-#include <osgVis/core/OccluderSelector.h>
-#include <osgVis/core/VisibilityModule.h>
+#include <osgVis/core/octree/BoxOcclusion.h>
+#include <osgVis/core/spatial/KdTree.h>
+#include <osgVis/core/occluders/OccluderBuilder.h>
+#include <osgVis/core/occluders/OccluderSelector.h>
+#include <osgVis/core/module/VisibilityModule.h>
 
 #include <memory>
 

@@ -2,7 +2,7 @@
 /// @file
 /// The cells of a cell-and-portal subdivision: axis-aligned leaf boxes of a kd-tree (or boxes a
 /// modeller stated), the portals joining them, and point location.
-#include <osgVis/core/AxialRect.h>
+#include <osgVis/core/geometry/AxialRect.h>
 
 #include <cstdint>
 #include <string>

@@ -3,8 +3,9 @@
 /// Everything a cell-portal bake produces and a `.pvs` file stores: the cells and portals, per
 /// source cell the stab tree (portal sequences a sightline can pass), the cells and objects visible
 /// from anywhere in it, and a fingerprint of the model it was baked for.
-#include <osgVis/core/CellGraph.h>
-#include <osgVis/core/VisibleSet.h>
+#include <osgVis/core/pvs/CellGraph.h>
+#include <osgVis/core/scene/SceneFingerprint.h>
+#include <osgVis/core/scene/VisibleSet.h>
 
 #include <cstdint>
 #include <vector>
@@ -50,9 +51,4 @@ struct CellPortalData
     std::vector<SourceCellVisibility> sources; ///< one per cell
     BakeStatistics statistics;
 };
-
-/// Identifies a model for its baked data: FNV-1a 64 over the object count and, per object, its
-/// bounds, triangle count and static flags (DYNAMIC, TRANSPARENT, ALWAYS_VISIBLE, NO_AUTO_OCCLUDER,
-/// CULL_*). Triangles are not hashed, so an extraction without them fingerprints the same.
-std::uint64_t sceneFingerprint(const Scene& scene);
 } // namespace osgVis::core

@@ -3,7 +3,7 @@
 /// The `.pvs` file (docs/pvs-format.md): versioned little-endian binary holding CellPortalData and
 /// the path of the model it was baked for, with compressed per-cell bitsets and a checksum. The
 /// reader never trusts bytes: anything corrupt, truncated or inconsistent is an error, never a crash.
-#include <osgVis/core/CellPortalData.h>
+#include <osgVis/core/pvs/CellPortalData.h>
 
 #include <cstdint>
 #include <stdexcept>

@@ -3,7 +3,7 @@
 /// What a module decided in its last query, for debug views (the viewer's top-down map): tree
 /// nodes with their state, the occluders it used and the cell the eye was in. Filled only on
 /// request, so queries pay nothing for it otherwise.
-#include <osgVis/core/Aabb.h>
+#include <osgVis/core/geometry/Aabb.h>
 
 #include <cstdint>
 #include <vector>

@@ -2,8 +2,8 @@
 /// @file
 /// Renderer-independent scene model: the objects a visibility module culls, the triangles they are
 /// made of, occluder candidates, and cells/portals where a modeller stated them.
-#include <osgVis/core/Aabb.h>
-#include <osgVis/core/ConvexPolygon.h>
+#include <osgVis/core/geometry/Aabb.h>
+#include <osgVis/core/geometry/ConvexPolygon.h>
 
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// One viewpoint as a renderer hands it to the visibility core.
-#include <osgVis/core/Frustum.h>
+#include <osgVis/core/geometry/Frustum.h>
 
 #include <cstdint>
 

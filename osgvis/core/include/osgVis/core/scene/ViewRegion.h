@@ -4,8 +4,8 @@
 /// perspective projection whose near plane lies within given bounds. A module's answer for a
 /// region (VisibilityModule::cullRegion) holds for every view the region holds, so a renderer can
 /// compute it ahead of time, off its cull thread, and use it for as long as the eye stays inside.
-#include <osgVis/core/Aabb.h>
-#include <osgVis/core/View.h>
+#include <osgVis/core/geometry/Aabb.h>
+#include <osgVis/core/scene/View.h>
 
 namespace osgVis::core
 {

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Set of object ids as a bitset: the answer of a visibility query.
-#include <osgVis/core/Scene.h>
+#include <osgVis/core/scene/Scene.h>
 
 #include <cstdint>
 #include <vector>

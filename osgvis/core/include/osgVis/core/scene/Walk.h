@@ -2,7 +2,7 @@
 /// @file
 /// Walk paths: a timed sequence of viewpoints with one fixed projection, stored as text
 /// (format documented in docs/walk-format.md).
-#include <osgVis/core/Math.h>
+#include <osgVis/core/geometry/Math.h>
 
 #include <iosfwd>
 #include <stdexcept>

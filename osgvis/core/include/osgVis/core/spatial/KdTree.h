@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// kd-tree over object bounds (median split on the longest axis) with front-to-back traversal.
-#include <osgVis/core/Aabb.h>
+#include <osgVis/core/geometry/Aabb.h>
 
 #include <cstdint>
 #include <functional>
