@@ -5,7 +5,7 @@ build=$1 src=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
 prefix=$work/prefix
 cmake --install "$build" --prefix "$prefix" >"$work/install.log"
-for f in include/osgVis/VisibilityGroup include/osgVis/core/VisibilityModule.h \
+for f in include/osgVis/VisibilityGroup include/osgVis/core/module/VisibilityModule.h \
          lib/cmake/osgVis/osgVisConfig.cmake lib/pkgconfig/osgVis.pc; do
     [ -e "$prefix/$f" ] || { echo "installed tree lacks $f" >&2; exit 1; }
 done
@@ -22,10 +22,22 @@ grep -q "osgVis::VisibilityGroup" "$work/readme_example.cpp"
 echo "== find_package(osgVis)"
 cmake -S "$src" -B "$work/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" \
     -DREADME_EXAMPLE="$work/readme_example.cpp" >"$work/configure.log"
-cmake --build "$work/cmake-build" >"$work/build.log"
+cmake --build "$work/cmake-build" >"$work/build.log" 2>&1 || { cat "$work/build.log" >&2; exit 1; }
 out=$("$work/cmake-build/osgvis_consumer")
 echo "$out"
 grep -q "consumer ok" <<<"$out"
+
+echo "== a consumer of the old flat header paths (forwarding headers, one release)"
+out=$("$work/cmake-build/osgvis_old_paths_consumer")
+echo "$out"
+grep -q "old paths ok" <<<"$out"
+for moved in Walk.h:scene/Walk.h ModuleRegistry.h:api/ModuleRegistry.h OctreeModule.h:octree/OctreeModule.h \
+             PvsFormat.h:pvs/PvsFormat.h; do
+    text="#pragma message: <osgVis/core/${moved%%:*}> moved to <osgVis/core/${moved#*:}>"
+    count=$(grep -c -F "$text" "$work/build.log" || true)
+    [ "$count" -eq 1 ] || { echo "expected the warning '$text' once in the build, found $count:" >&2; cat "$work/build.log" >&2; exit 1; }
+done
+echo "moved-header warnings: once each"
 
 [ -x "$work/cmake-build/readme_example" ] || { echo "the README example did not build" >&2; exit 1; }
 

@@ -3,7 +3,7 @@
 #include <osg/Shape>
 #include <osg/ShapeDrawable>
 #include <osgVis/VisibilityGroup>
-#include <osgVis/core/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleRegistry.h>
 
 #include <iostream>
 
