@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # OSG 3.6 ships no CMake package and FindOpenSceneGraph only sets variables; wrap them in imported
 # targets OpenSceneGraph::<component> so the rest of the build (and consumers) link targets.
 include_guard(GLOBAL)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Configures and builds osgVis into ${OSGVIS_BUILD_DIR:-build} (Release with debug info).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

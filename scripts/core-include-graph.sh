@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Prints the include graph between the folders of osgvis/core, read from the compiler's own
 # dependency output (c++ -MM on every source and header), and checks the layers of
 # docs/architecture.md: a folder may include only folders of lower layers, so there is no arrow

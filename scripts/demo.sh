@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Quick start #1: installs dependencies, builds, generates the demo scene (an office floor) and
 # runs the walkthrough on it. With no display it renders headless under Xvfb and writes the
 # screenshots and report to out/demo/.

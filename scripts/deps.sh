@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Installs osgVis's build, test and run dependencies from Debian 12 packages (run as root).
 # Skips apt entirely when everything is already there, so repeated runs are quick.
 set -euo pipefail

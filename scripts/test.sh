@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Quick start #2: installs dependencies, builds, and runs the whole test suite (under Xvfb when
 # there is no display). Extra arguments go to ctest, e.g. `scripts/test.sh -L core`.
 set -euo pipefail

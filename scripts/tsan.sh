@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # ThreadSanitizer build of the threaded tests: region queries and AsyncVisibility (core, the
 # worker thread), the octree's parallel traversal (TBB) and every OSG threading model with two
 # views sync and async (adapter, under a display). Builds into ${OSGVIS_TSAN_BUILD_DIR:-build-tsan};

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Runs a command with an X display: the caller's if there is one, else a private Xvfb (Mesa
 # llvmpipe gives OpenGL 4.5 there).
 set -euo pipefail

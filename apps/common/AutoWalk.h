@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A walk for a scene that comes without one: an orbit around the scene's bounds, looking at its
 // centre, with one near/far derived from the bounds so every view keeps the same depth range.

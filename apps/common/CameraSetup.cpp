@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "CameraSetup.h"
 
 #include <glm/gtc/type_ptr.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The camera settings every mode shares, so that a conservative culling mode draws exactly the
 // pixels of the `osg` baseline: the walk's own projection with one fixed near/far for the whole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "PluginPaths.h"
 
 #include <osgDB/Registry>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where osgVis's apps find osgVis's own osgDB plugins (.pvs, .gltf/.glb, the serializers).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where an app's scene and walk come from (osgvisviewer and osgvisbench load them the same way): a
 // model file (with the walk beside it, a walk given by --walk, or an automatic orbit), a baked `.pvs`

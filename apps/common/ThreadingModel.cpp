@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ThreadingModel.h"
 
 #include <sstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The threading model and async options both apps take (--threading, --async): names as OSG
 // spells its enum, on/off lists.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The modes osgvisbench compares. Three are the bench's own reference points; every other name is
 // an osgVis module chain (core::createChain) run through an osgVis::VisibilityGroup.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Command line of osgvisbench: what scene, which walk, which modes, at what size, and where the
 // JSON goes. Parsing only: nothing here loads a file or touches GL.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a bench run found: the run's description and one row of metrics per mode (DESIGN.md's
 // metrics table; exact definitions in docs/benchmark.md). Unset optionals are metrics with no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "BenchRun.h"
 
 #include <SceneSource.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One bench run from a parsed command line to a report: load the scene and walk, run the oracle,
 // render every mode's pass in one viewer, measure.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "BenchView.h"
 
 #include <CameraSetup.h>

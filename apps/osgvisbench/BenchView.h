@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The views a bench run renders: every key of the (already subsampled or cube-expanded) walk, each
 // with the exact matrices every mode and the oracle use (one fixed projection, one fixed near/far

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "BenchViewer.h"
 
 #include <CameraSetup.h>

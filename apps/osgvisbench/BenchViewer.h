@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The one offscreen viewer every mode renders in: a pbuffer of the walk's size, single-threaded by
 // default (the threading table runs the others), the walk's fixed projection and near/far,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "CullSweep.h"
 
 #include "BenchView.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Cull-only sweeps (--speeds, --threads): each module-chain mode's core::ModuleChain driven
 // directly on the extracted scene, with no rendering, so the time measured is the module's own

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The walks the bench derives from the scene's walk: fewer keys (--views), the six cube faces of
 // every key (--cube), and the observer moving several times faster (--speeds). Pure functions of

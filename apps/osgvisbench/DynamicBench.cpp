@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "DynamicBench.h"
 
 #include <SceneSource.h>

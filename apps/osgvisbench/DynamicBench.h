@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // osgvisbench --dynamic: the bench run over a dynamic walk (DynamicWalk). Per frame the scene
 // changes the same way for the oracle and every mode; the oracle renders each frame's scene, whose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "DynamicWalk.h"
 
 #include <osgVis/gen/BoxGeometry.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scripted changes of a dynamic walk (osgvisbench --dynamic): cars (small boxes under DYNAMIC
 // MatrixTransforms, so the extraction flags them OBJECT_DYNAMIC) drive along the walk's streets

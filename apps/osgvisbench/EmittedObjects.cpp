@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "EmittedObjects.h"
 
 #include <osgUtil/StateGraph>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // S(v): the objects a cull traversal actually handed to the draw, read back from the render
 // stage's bins after the frame. Measuring what was emitted (rather than asking a module what it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ExactReplay.h"
 
 #include <osgVis/core/api/ModuleRegistry.h>

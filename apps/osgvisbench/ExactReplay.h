@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The `exact` mode: a visibility module that answers the oracle's visible set of the view being
 // rendered, run through the same osgVis::VisibilityGroup as every module chain. It marks the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "MaskSweep.h"
 
 #include "BenchView.h"

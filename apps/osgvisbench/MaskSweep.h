@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The Δ sweep of the mask modules (--mask-deltas): every mode with a mask stage re-run cull-only
 // over the bench's views once per image-space shrinkage Δ, with the module's own statistics per

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Turns one mode's pass and the oracle's reference into the metrics of DESIGN.md.
 #include "BenchReport.h"

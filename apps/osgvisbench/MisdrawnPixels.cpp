@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "MisdrawnPixels.h"
 
 namespace osgVis::bench

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Mis-drawn pixels of a mode (the paper's image-error measure for approximate culling): per view,
 // the pixels of the oracle's exact ID image (display resolution) whose object is not in the mode's

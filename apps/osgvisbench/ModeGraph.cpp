@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ModeGraph.h"
 
 #include "ExactReplay.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scene data each mode renders. Every mode draws the same drawables with the same state; only
 // what decides which of them reach the draw differs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ModePass.h"
 
 #include "Progress.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One mode's timed pass over the walk: every view rendered once, with what the cull traversal
 // emitted (S(v)) and the cull time read back after each frame, outside the timed region.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "OcclusionQueryGraph.h"
 
 #include <osg/Geode>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The graph of the `osg-oq` mode: OSG's built-in hardware occlusion queries applied to every object.
 // OSG only queries whole nodes, so each object (drawable instance) gets its own

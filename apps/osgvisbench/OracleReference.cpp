@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "OracleReference.h"
 
 #include "Progress.h"

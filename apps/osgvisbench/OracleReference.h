@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The exact visible set E(v) of every bench view, from the ID-buffer oracle rendering the real
 // graph at the same matrices and resolution, translated into the adapter's object ids. Runs once,

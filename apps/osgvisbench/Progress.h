@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Progress lines on stderr, about every 10% of a pass, so a long run shows it is alive without
 // drowning the table on stdout.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Teller & Séquin's progressive table (their Table 2): how much of the model each stage of
 // cell-and-portal culling still draws, from the entire model through cell-to-cell, cell-to-object

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The machine-readable result (schema in docs/benchmark.md). Every number is finite or null.
 #include "BenchReport.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ReportTable.h"
 
 #include "MisdrawnPixels.h"

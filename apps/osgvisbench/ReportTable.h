@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The human-readable result: a heading line about the run and one row per mode.
 #include "BenchReport.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Order statistics of timing samples, shared by the rendered passes and the cull sweeps so both
 // report medians and percentiles the same way.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ThreadingTable.h"
 
 #include "BenchViewer.h"

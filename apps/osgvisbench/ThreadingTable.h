@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The threading table (--threading, --async): every osg and module-chain mode rendered again
 // under each OSG threading model with asynchronous visibility on and/or off, against the same

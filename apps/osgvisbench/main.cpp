@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisbench: every culling mode side by side over one scene and walk, measured against the
 // exact-visibility oracle (docs/benchmark.md). Exit status 1 when a conservative mode culled a
 // visible object or answered differently at different thread counts, so CI can run the bench as a

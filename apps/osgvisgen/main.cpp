@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisgen: writes a seeded test scene (.osgb or any format osgDB writes) and its walk beside it.
 #include <osgVis/gen/Generator.h>
 #include <osgVis/gen/SceneStats.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Command line of osgvisglfw: what to show, how to cull it, the window size, and the optional
 // frame limit, screenshot and fixed camera that make a run scriptable.

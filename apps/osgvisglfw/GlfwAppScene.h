@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What osgvisglfw shows: a model file or a built-in demo, placed under an osgVis::VisibilityGroup
 // for a module chain, or left alone for OSG's own culling.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "GlfwEventAdapter.h"
 
 #define GLFW_INCLUDE_NONE // OSG brings the GL headers

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Forwards a GLFW window's input (keys, mouse buttons, cursor, scroll, framebuffer size) to the
 // event queue of an osgViewer::GraphicsWindowEmbedded, so OSG's manipulators and event handlers

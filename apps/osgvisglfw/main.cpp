@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisglfw: how an application that owns its window and GL context hosts an OSG scene culled by
 // osgVis. The shape, for copying:
 //

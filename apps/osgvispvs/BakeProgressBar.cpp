@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "BakeProgressBar.h"
 
 #include <string>

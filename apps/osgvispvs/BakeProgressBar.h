@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The bake's progress on stderr: a bar with percentage and ETA, redrawn in place at most five
 // times a second (only on a terminal, or when asked), and one closing line in every case.

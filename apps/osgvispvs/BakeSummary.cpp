@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "BakeSummary.h"
 
 #include <cstdio>

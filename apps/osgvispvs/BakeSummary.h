@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What osgvispvs reports about a bake: the figures of the baked data (counted from the data
 // themselves), printed as text and optionally written as JSON.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Command line of osgvispvs: the model to bake, where the .pvs goes, and the bake's knobs. Parsing
 // only: nothing here reads a file.

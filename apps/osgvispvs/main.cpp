@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvispvs: bakes cell-and-portal visibility for a model into a .pvs file (docs/pvs-format.md) and
 // reports the bake's statistics. Exit status 1 for files that cannot be read or written or an empty
 // scene, 2 for a bad command line (as osgvisbench).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "BuildingTool.h"
 
 #include <osgVis/gen/BoxGeometry.h>

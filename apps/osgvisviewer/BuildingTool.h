@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Live scene edits during an interactive walk (keys b and B / Delete): drop a building box a few
 // metres ahead of the eye, or delete the building nearest the centre of the view. The edits change

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "CullingModes.h"
 
 #include <osgVis/core/api/ModuleRegistry.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The culling modes the viewer switches between: `osg` (the plain graph under OSG's own culling)
 // and every module chain of the core registry, applied by placing the model under an

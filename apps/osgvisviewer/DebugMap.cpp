@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "DebugMap.h"
 
 #include <CameraSetup.h>

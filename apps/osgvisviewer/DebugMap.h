@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Top-down plan of the scene for checking a culling mode by eye: every object's footprint coloured
 // drawn (green), culled inside the frustum (red) or outside the frustum (grey), plus the frustum

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "DebugRecordLayers.h"
 
 #include "MapGeometry.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The part of the debug map that shows what a module recorded about its last query
 // (core::DebugRecord): its tree nodes as rectangles coloured by state (occluded red, visible or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "FrameCapture.h"
 
 #include <osg/RenderInfo>

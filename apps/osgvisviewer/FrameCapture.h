@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Reads back the pixels of one drawn frame. Installed as the camera's FINAL draw callback: a
 // post-draw callback would make osg::OcclusionQueryNode stop querying in OSG 3.6.5 ("Invalid

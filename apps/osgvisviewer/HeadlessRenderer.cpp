@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "HeadlessRenderer.h"
 
 #include <CameraSetup.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Renders every view of the walk offscreen (a pbuffer on the X display) and writes
 // OUTDIR/frame-NNNN.png, a top-down map-NNNN.png every MapInterval views, and report.{json,txt}.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "InteractiveViewer.h"
 
 #include "BuildingTool.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The windowed walkthrough: walk manipulator, OSG's usual handlers, live mode switching and the
 // top-down debug map.

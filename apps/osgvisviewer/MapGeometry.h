@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Building blocks of the debug map's drawing: flat layers in the z = 0 plane of the map's
 // orthographic camera, and the render bins that stack them (depth testing is off, so only the bin

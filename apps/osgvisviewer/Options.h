@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Command line of osgvisviewer: what to show (a model file or a generated scene), how to cull it,
 // which walk to follow and whether to render it offscreen.

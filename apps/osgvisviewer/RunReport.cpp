@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "RunReport.h"
 
 #include <osgVis/Statistics>

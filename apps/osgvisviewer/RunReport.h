@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Figures of a headless run, per view and summed up, written as report.json and report.txt.
 #include <osg/Stats>

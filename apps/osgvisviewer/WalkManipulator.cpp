@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "WalkManipulator.h"
 
 #include <CameraSetup.h>

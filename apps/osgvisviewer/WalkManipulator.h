@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // First-person camera for walking through a scene: keys move the eye, a left-button drag turns the
 // head, `p` plays the walk back by its own time stamps and `r` records the eye path as a walk.

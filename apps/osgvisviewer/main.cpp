@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisviewer: walk through a scene with osgVis culling, in a window or headless to PNG files.
 #include "CullingModes.h"
 #include "HeadlessRenderer.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "GltfAccessors.h"
 
 #include "GltfError.h"

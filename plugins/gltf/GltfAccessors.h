@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Validated reading of glTF accessors: the accessor, its buffer view and buffer, the component
 // type, the element count and stride are all checked against the bytes that exist before any is

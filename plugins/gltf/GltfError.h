@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What is wrong with a glTF model, in words; the reader prefixes "gltf: <file>: " and hands it to
 // osgDB as the ReadResult's message.

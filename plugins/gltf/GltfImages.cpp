@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "GltfImages.h"
 
 #include <osgDB/FileNameUtils>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Decoding a glTF image's encoded bytes (PNG, JPEG, ...) with OSG's image plugins, chosen by MIME
 // type, file extension or the bytes' signature.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "GltfMaterials.h"
 
 #include "GltfAccessors.h"

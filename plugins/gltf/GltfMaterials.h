@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // glTF materials as OSG state: pbrMetallicRoughness base colour (factor → osg::Material diffuse and
 // ambient, texture → osg::Texture2D on unit 0 with the sampler's wrap and filter modes), emissive

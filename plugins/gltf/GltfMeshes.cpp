@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "GltfMeshes.h"
 
 #include "GltfAccessors.h"

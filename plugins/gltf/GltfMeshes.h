@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A glTF mesh as an osg::Geode of one osg::Geometry per primitive: POSITION, NORMAL (smooth normals
 // generated when absent for triangle modes), TEXCOORD_0, COLOR_0, indices or none, in any of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "GltfParse.h"
 
 #include "GltfError.h"

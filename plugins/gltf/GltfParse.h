@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Parsing .gltf (JSON) or .glb (binary, told by its "glTF" magic) bytes with tinygltf. External
 // buffers and images resolve against `baseDir`, then through osgDB's data file search (the options'

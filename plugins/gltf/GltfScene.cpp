@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "GltfScene.h"
 
 #include "GltfError.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The node hierarchy of a glTF model as OSG nodes: the default scene (else scene 0, else every node
 // that is no node's child), each glTF node an osg::MatrixTransform (its matrix or T·R·S) named

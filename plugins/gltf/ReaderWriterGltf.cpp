@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgdb_gltf: glTF 2.0 (.gltf JSON and .glb binary) as an osgDB format, read with tinygltf.
 //
 // Reading gives the model's default scene (else scene 0, else every parentless node):

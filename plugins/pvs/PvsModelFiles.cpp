@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "PvsModelFiles.h"
 
 #include <osgDB/FileNameUtils>

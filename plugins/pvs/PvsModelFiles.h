@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the model of a .pvs file lies on disk: the path the file names (relative to the .pvs's
 // folder, then as given, then on osgDB's data path), or for a corrupt .pvs the model saved beside it.

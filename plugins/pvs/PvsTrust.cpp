@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "PvsTrust.h"
 
 #include <osgVis/SceneExtractor>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Whether a .pvs file's data were baked for a model, and the VisibilityGroup that shows the model
 // either way: "cellportal" when the data are trusted, "frustum" when not. The group carries a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgdb_pvs: the `.pvs` file (docs/pvs-format.md) as an osgDB format.
 //
 // Reading x.pvs gives the model the file names, under an osgVis::VisibilityGroup named "x.pvs":

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgVis::Cell: its box (the cell's name is the node's name); children come through osg::Group's wrapper.
 #include <osgVis/Cell>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgVis::Occluder: its explicit occluder polygons; children come through osg::Group's wrapper.
 #include "PolygonStream.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "PolygonStream.h"
 
 #include <osgDB/InputStream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One Vec3d polygon in the .osgt/.osgb/.osgx streams: its vertex count, then its vertices (in
 // brackets in ascii). Shared by the Occluder and Portal wrappers so both files spell polygons alike.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgVis::Portal: its polygon and the names of the two cells it joins; children come through
 // osg::Group's wrapper.
 #include "PolygonStream.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgVis::VisibilityGroup: its modes, asynchronous visibility and extraction options; children come
 // through osg::Group's wrapper.
 #include <osgVis/VisibilityGroup>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The viewer's building tool (keys b and B): a box dropped ahead of the eye and the deletion of the
 // building nearest the view centre reach the culling through dirtyScene, as a re-extraction with
 // stable ids (Inserted / Removed), and the VisibilityGroup's visible set follows. No GL.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The viewer's debug map draws what a module recorded about its query (core::DebugRecord): an
 // occluded node as a red rectangle, the active occluders as thick blue lines, the eye's cell as a
 // yellow rectangle; a module that records nothing (frustum) leaves those places empty. The map is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvispvs end to end: bakes a small generated office into a .pvs that decodes, prints and writes
 // the bake's statistics, and refuses bad input with a message naming the thing and the documented
 // exit status (1: files and scenes, 2: command line).

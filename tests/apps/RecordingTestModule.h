@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A visibility module for tests of the debug views: it culls nothing and, when given a
 // core::DebugRecord, appends a fixed description of its "query" (one occluded node, one occluder

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgVis::ViewCuller hands an attached core::DebugRecord to every stage of its views' chains, clears
 // it before each query, and stops when it is detached. No GL: the culler runs on bare cull visitors.
 #include "RecordingTestModule.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisviewer --headless writes one PNG per walk view, and a conservative mode draws exactly the
 // pixels of the `osg` baseline (same projection, fixed near/far, no small-feature culling).
 #include "ViewerProcess.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Runs the built osgvisviewer binary (its path comes in by compile definition).
 #include "AppProcess.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // End-to-end checks of osgvisbench: runs the built binary on tiny generated scenes (a few thousand
 // triangles, 8 views at 160x128, seconds on llvmpipe) and reads back its JSON. What must hold on
 // every scene: conservative modes miss nothing, `exact` draws exactly the oracle's set, OSG's own

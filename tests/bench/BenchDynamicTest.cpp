@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisbench --dynamic end to end on a tiny city (5000 triangles, 8 views at 160x128): cars drive
 // every frame, buildings are dropped and deleted at fixed frames, the oracle renders each frame's
 // scene, and conservative modes still miss nothing. With 8 views the changes are exactly: 12 cars

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A baked .pvs file as the bench's scene: loaded through the osgdb_pvs plugin (found from the build
 // tree without OSG_LIBRARY_PATH), the model it names measured with the bench's own modes, the walk
 // found beside the model, the trust verdict printed, and no visible object culled.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisbench's cull-only sweeps (--speeds, --threads), cube views (--cube) and their command-line
 // errors, end to end on a tiny generated city (needs a display for the rendered passes).
 #include "AppProcess.h"

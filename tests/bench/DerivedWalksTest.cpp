@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The walks osgvisbench derives from a scene's walk: evenly subsampled keys, six cube faces per key
 // covering every direction, and faster observers (every S-th key, bouncing at the walk's ends).
 #include "../../apps/osgvisbench/DerivedWalks.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisbench's figures for the mask modules, end to end on a tiny generated city: the cull-only Δ
 // sweep (--mask-deltas: one row per Δ, critical frames, per-step times, reasons) and the mis-drawn
 // pixels of every rendered mode (0 for conservative ones, a histogram over all views).

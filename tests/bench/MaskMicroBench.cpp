@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Micro-benchmark of the mask module's inner pieces (issue 5): the conservative software
 // rasterizer (triangles per millisecond into 512² and 1024² masks), the max-depth pyramid build,
 // and the pyramid's rectangle test (boxes per millisecond). Screen shapes are building faces as a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Reads the bench JSON's "progressive" array (the cell-portal stages' drawn fractions) for the tests.
 #include <string>

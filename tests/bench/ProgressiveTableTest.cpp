@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The bench's progressive cell-portal table (Teller & Séquin's Table 2): present exactly when a
 // cellportal mode runs, the stages in the paper's order, and each stage drawing no more than the
 // stages it is nested in (cell-to-cell ⊇ cell-to-object ⊇ eye-to-object, cell-to-cell ⊇ eye-to-cell

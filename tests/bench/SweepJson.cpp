@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "SweepJson.h"
 
 #include "BenchJson.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Reading the cull-only sweep part of osgvisbench's JSON for the tests: the `sweeps` array has one
 // flat object per line, and `identical_across_threads` maps mode names to booleans.

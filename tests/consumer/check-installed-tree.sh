@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # usage: check-installed-tree.sh BUILD_DIR CONSUMER_SOURCE WORK_DIR
 set -euo pipefail
 build=$1 src=$2 work=$3

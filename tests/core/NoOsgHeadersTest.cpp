@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The core must stay renderer-independent: no file under osgvis/core may include an OSG, OpenThreads
 // or GL header. Scans the sources, not the build, so it also covers headers no target compiles.
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Drives the core with no renderer at all: its own scene, its own views, and a brute-force reference
 // that shares no code with the frustum module (the frustum is rebuilt from its eight corners and
 // boxes are tested with the separating-axis theorem).

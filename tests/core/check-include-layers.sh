@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The layer check of scripts/core-include-graph.sh: our core passes it, and a copy of the core with
 # a method including another method and a lower layer including a higher one fails it, naming both.
 set -euo pipefail

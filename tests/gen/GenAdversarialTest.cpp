@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The adversarial set exists, each scene has a short walk, and each holds the trap it is named for.
 #include "SceneProbe.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisgen as a user runs it: clear messages and a non-zero exit on bad input, the scene and its
 // walk on disk otherwise.
 #include "AppProcess.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The floor preset: one office storey of fixed size (~2 300 objects whatever the budget), walked
 // along its corridors only.
 #include "SceneProbe.h"

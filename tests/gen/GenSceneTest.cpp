@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The three benchmark scene kinds: determinism, the triangle budget, and walks that stay in the open.
 #include "SceneProbe.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Test helper: every drawable instance of a graph with its world-space bounds, found by a traversal
 // of its own (independent of the generator's model).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisglfw refuses bad input with a message that names the problem and a non-zero exit code,
 // before it opens a window (so these tests need no display).
 #include "GlfwAppProcess.h"

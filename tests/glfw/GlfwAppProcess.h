@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Runs the built osgvisglfw binary (its path comes in by compile definition) and reads the figures
 // it prints at exit.

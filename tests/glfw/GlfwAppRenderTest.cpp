@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgvisglfw renders in its own GLFW window under an X display (Xvfb with Mesa in the tests):
 // the built-in demo with and without osgVis, and a model file written here.
 #include "GlfwAppProcess.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The GLFW → OSG event adapter of osgvisglfw, compiled in: its key and modifier tables, and that
 // each GLFW callback it installs puts the matching event in the embedded window's queue. The
 // callbacks are called directly (read back with glfwSet*Callback), since no tool here synthesises

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The one contract, checked for every mode the registry knows: over the generated scenes (every
 // view of their walks) and the adversarial set, a conservative mode leaves 0 visible objects
 // undrawn. The judge is the oracle inside osgvisbench, which renders the real graph; modes run

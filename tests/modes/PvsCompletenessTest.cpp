@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The cell-portal contract at the level of its parts: from eyes sampled inside every cell, looking
 // in all six cube directions, every object the oracle's ID render sees lies in that cell's PVS
 // (cell-to-object) and in the module's eye-to-object answer for that view. Scenes: a small office

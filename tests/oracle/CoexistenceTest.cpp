@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The oracle lives beside the application's own viewer in one process (the bench does this): it must
 // not disturb that viewer's context or its drawables, and must not inherit its culling.
 

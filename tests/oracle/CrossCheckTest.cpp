@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The two judges against each other: the ID-buffer render (GL rasterisation of the real graph) and
 // the CPU ray caster (Möller–Trumbore at pixel centres) on random boxes from random views.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Object enumeration: the same rule as the adapter's extraction (active children, node mask != 0,
 // one object per drawable instance, depth-first, children in index order, path root..drawable).
 

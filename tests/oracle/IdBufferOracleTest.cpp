@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Exact visible sets of the ID-buffer oracle on small scenes built here, each checked against the
 // CPU ray caster too where the ray caster models the case (it ignores transparency passes' order and
 // polygon modes, but honours cull face).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Per-object pixel counts of the ID-buffer oracle (Result::pixels, the bench's mis-drawn pixels):
 // exact counts where the layout leaves no pixel centre on an edge, so the rasterization rule
 // decides nothing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "OracleTestScenes.h"
 
 #include <osg/BlendFunc>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // Small scenes and cameras for the oracle tests. Coordinates: the eye looks down -z from +z unless a

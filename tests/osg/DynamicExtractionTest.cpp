@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Dynamic scenes through the adapter: a re-extraction after dirtyScene keeps object ids, reports
 // exactly what was inserted, moved and removed, hands views' chains sceneReplaced instead of a
 // rebuild, and the VisibilityGroup still draws exactly the objects in the frustum. Bare cull

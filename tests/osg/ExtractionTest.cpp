@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scene extraction: exact objects, bounds, flags and marker data from small hand-built graphs.
 #include "TestScenes.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The node kit must not change the picture: the same scene rendered as a plain graph, under a
 // VisibilityGroup and with osgVis::CullVisitor gives identical pixels, while the culler reports that
 // it did cull something (so the comparison is not vacuous). Needs a display (Xvfb).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "TestScenes.h"
 
 #include <osg/StateSet>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small hand-built geometry for the adapter tests.
 #include <osg/Camera>

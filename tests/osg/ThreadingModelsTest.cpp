@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every OSG threading model with an osgViewer::CompositeViewer of two views of one VisibilityGroup
 // (so two cull threads may cull it at once): each view draws exactly the pixels of the plain graph,
 // synchronous modes let through the same objects per view as SingleThreaded does, and with async

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Per-view state: two views of one VisibilityGroup (two cull visitor identifiers, as two cameras or
 // two eyes) keep separate visible sets. Uses bare cull visitors, no GL.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgdb_pvs through osgDB, as an application uses it: write x.pvs (bake + model beside), read it
 // back as a trusted cell-portal group, and every way the pair can go wrong.
 #include <osgVis/SceneExtractor>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "AppProcess.h"
 
 #include <sys/wait.h>

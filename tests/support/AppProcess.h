@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Runs a built osgVis program as a user would (a shell command line) and keeps its exit code and
 // everything it printed, for the end-to-end tests of the apps.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "BadModelFiles.h"
 
 #include <fstream>

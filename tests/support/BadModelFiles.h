@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Model files an application must refuse or survive, written fresh for each test.
 #include <filesystem>

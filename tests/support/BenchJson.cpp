@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "BenchJson.h"
 
 #include <cstdlib>

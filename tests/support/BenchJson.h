@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Just enough reading of osgvisbench's JSON for the tests: fields of the top level and of one mode
 // object. Not a general JSON parser; the bench writes one key per line with flat mode objects.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The adversarial set: one small scene per known way culling goes wrong (DESIGN.md), each with a
 // short walk. Every culling mode runs all of them against the oracle. Unless stated, the eye looks
 // along +y with z up, perspective 60° fovY at 1280 × 1024, near 0.1, far 100; "target" boxes are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/gen/BoxGeometry.h>
 
 namespace osgVis::gen

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // City: a square grid of blocks separated by streets, each block a raised pavement carrying a few
 // box buildings of random footprint and height (the urban scene of Wang–Agarwal–Har-Peled's
 // occlusion-mask paper). Facades are tessellated, so most triangles are hidden behind the nearest

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/gen/Generator.h>
 
 #include "Scenes.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A generated scene before it is meshed: shapes (quads, triangles, raw polygons) grouped into meshes
 // (one drawable each) and placed by a tree of groups, geodes and transforms. The same model meshes at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Office building: storeys of furnished rooms along corridors (the office floor of Teller–Séquin's
 // cell-portal paper and the office scene of Coorg–Teller's octree paper).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Scene colours: a base colour per kind of thing, varied per instance so screenshots show where one
 // object ends and the next begins.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Seeded random numbers that are identical on every platform: std::mt19937's output sequence is fixed
 // by the standard, but the std distributions are implementation-defined, so the mapping from the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scene kinds as models (layout decided, tessellation density still free) with their walks.
 #include "Model.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The shape builders every scene shares: boxes, horizontal slabs, walls with door openings and the
 // office furniture prototypes (built in local coordinates, placed by transforms).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Field of tetrahedra: regular tetrahedra of random size and orientation resting on a ground plane
 // (the third scene of Coorg–Teller's octree paper): many small objects that hide each other only
 // partly. Tetrahedra are grouped in square tiles, each tile a MatrixTransform to its corner, so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Walks through waypoints: a centripetal Catmull–Rom curve (it neither overshoots nor loops where
 // waypoints are unevenly spaced, so a path through a door stays in the door) sampled at a constant

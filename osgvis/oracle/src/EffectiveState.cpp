@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "EffectiveState.h"
 
 #include <osg/CullFace>

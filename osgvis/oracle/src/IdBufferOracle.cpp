@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/oracle/IdBufferOracle.h>
 
 #include "IdColour.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "IdPassState.h"
 
 #include <osg/ColorMask>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "IdRenderer.h"
 
 #include "IdColour.h"

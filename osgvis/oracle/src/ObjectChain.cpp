@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ObjectChain.h"
 
 #include "IdColour.h"

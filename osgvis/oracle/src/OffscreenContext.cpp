@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/oracle/OffscreenContext.h>
 
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/oracle/OracleObject.h>
 
 #include "EffectiveState.h"

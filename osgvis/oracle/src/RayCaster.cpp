@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/oracle/RayCast.h>
 
 #include "EffectiveState.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "TriangleBvh.h"
 
 #include <algorithm>

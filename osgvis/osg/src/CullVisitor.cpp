@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/CullVisitor>
 
 #include <osgVis/core/api/ModuleRegistry.h>

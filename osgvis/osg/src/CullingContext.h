@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Internal: how a VisibilityGroup tells the drawables below it, during its children's cull
 // traversal, which of them are visible. A thread_local stack of active contexts (cull traversals

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "OccluderEligibility.h"
 
 #include "CullingContext.h"

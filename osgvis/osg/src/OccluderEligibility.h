@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Decides from a drawable's node path whether its triangles may stand in as automatic occluders
 // and from which side they hide: a polygon only hides what lies behind it if it is drawn every

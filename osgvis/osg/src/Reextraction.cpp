@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // reextractScene: a fresh extraction renumbered onto the ids of the previous one.
 #include <osgVis/SceneExtractor>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/SceneExtractor>
 
 #include <osgVis/Cell>

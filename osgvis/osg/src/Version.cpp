@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/Version>
 
 #define OSGVIS_STRINGIFY2(x) #x

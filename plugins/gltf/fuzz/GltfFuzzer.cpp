@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer entry point: every input through the glTF reader's stream path must give a node or an
 // error. Seed it with the sample models: osgvis_gltf_fuzzer corpus/ /usr/share/assimp/models/glTF2/...
 #include <osg/Notify>

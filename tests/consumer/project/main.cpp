@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A program outside the osgVis tree: wraps a box in a VisibilityGroup and lists the culling modes.
 #include <osg/Geode>
 #include <osg/Shape>

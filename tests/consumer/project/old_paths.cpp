@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A consumer written before the core moved into folders (osgVis 0.1): it includes the old flat
 // paths, which still work for one release and say where each header went. Walk.h is included
 // twice (directly and again below) to show the warning comes once per translation unit.

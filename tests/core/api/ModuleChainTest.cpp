@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/frustum/FrustumModule.h>
 #include <osgVis/core/api/ModuleRegistry.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Region queries and asynchronous visibility (issue 6) against the ray-cast reference: a region's
 // answer must hold every object some eye of the region sees in any direction; AsyncVisibility must
 // answer only inside a region computed for the current scene, predict a steady walk, and keep

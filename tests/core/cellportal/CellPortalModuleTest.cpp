@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The cell-portal bake and module on hand-made scenes whose visibility is known: rooms in a row
 // joined by doors, a room around a corner, an open field (one cell), and the search budget.
 #include <osgVis/core/cellportal/CellPortalModule.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cell subdivision and portal enumeration on hand-built scenes: which faces count as opaque, the
 // exact cells and door portals of two rooms, slits that must stay open, walls that must not block
 // (one-sided, transparent, dynamic, slanted), stated cells and portals, point location on and off

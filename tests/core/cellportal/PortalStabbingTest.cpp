@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Portal line stabbing: zero false rejections on thousands of sequences built around real lines
 // (and sightlines from real eyes), rejection of configurations no line passes, degenerate input,
 // and the measured looseness against a brute-force line search.

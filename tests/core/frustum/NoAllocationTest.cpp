@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The query phase allocates nothing after warm-up: a replaced global operator new counts.
 #include "AllocationCounter.h"
 

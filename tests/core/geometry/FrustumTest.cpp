@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/geometry/Frustum.h>
 #include <osgVis/core/scene/View.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The small dense LP behind the portal-stabbing tests: exact optima of textbook problems,
 // infeasible, unbounded and cycling-prone (degenerate) cases, equality rows and variable bounds.
 #include <osgVis/core/geometry/SmallLp.h>

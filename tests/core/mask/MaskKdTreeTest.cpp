@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/mask/MaskKdTree.h>
 
 #include <algorithm>

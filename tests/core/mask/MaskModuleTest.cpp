@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Contract tests of the mask module (issue 5) against the ray-cast reference (RayCastVisibility,
 // no shared code): a street walk through a small city, eyes on the boundary of the δ-ball with
 // targets barely hidden at the frame corners, thin slits, a wall at a grazing angle, degenerate

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Conservative group rasterization: exact pixel sets worked out by hand, depths (max over the
 // pixel, +inf at the horizon), and the key randomized property: every point of every covered
 // pixel (grown by the shrink) lies inside the occluder, nearer than the stored depth. Also checks

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // OcclusionMask: covering, the max-depth pyramid and its hierarchical rectangle test (checked
 // against a brute-force scan of level 0), and the erosion of mask-approx (against brute force).
 #include <osgVis/core/mask/OcclusionMask.h>

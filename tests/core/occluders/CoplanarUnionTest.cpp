@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Coplanar pieces of different objects join into one occluder only where their union is exactly
 // a convex polygon: abutting or overlapping wall pieces do; an L, a gap or opposite faces do not.
 #include <osgVis/core/occluders/CoplanarUnion.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Occluder polygons from scene triangles: coplanar merging into convex polygons, links across
 // shared edges, eligibility flags, face-culling orientation, welding and degenerate input.
 #include <osgVis/core/occluders/OccluderBuilder.h>

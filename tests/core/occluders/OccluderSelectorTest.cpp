@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Area-angle metric, the octree of potential occluders (never missing one that reaches the
 // threshold inside its leaf), and the per-frame choice of the k best.
 #include "AllocationCounter.h"

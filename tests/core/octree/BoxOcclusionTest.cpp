@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Box-vs-occluder planes (Coorg & Teller): exact classifications of hand-made configurations,
 // degenerate occluders, the silhouette-corner table against brute force, connected occluders,
 // and a randomized cross-check against an independent segment-polygon test.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The occlusion tree of the octree module's sweep (src/OcclusionTree.h): occluders that share no
 // edge hide together, margins open cracks where edges only touch, and a box is hidden only when
 // it lies behind the occluders. Eye at the origin looking along +y in every case.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The octree module on hand-built core scenes (no OSG): what a wall hides, what fused occluders
 // hide that single ones cannot, the cases where nothing may be hidden (near plane, eye on a
 // plane, inside geometry, orthographic views), the same answer at every thread count and with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The .pvs format: exact round trips, compact bitsets, and a specific PvsFormatError for each way
 // a file can be wrong (docs/pvs-format.md).
 #include "PvsSample.h"

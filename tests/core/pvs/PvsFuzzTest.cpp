@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Deterministic mutation fuzzing of a valid .pvs file: every mutant either decodes to consistent
 // data or throws PvsFormatError; anything else (another exception, a crash, a sanitizer report)
 // fails. Most mutants get their body size and CRC-32 repaired so they reach the parser.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A small but complete hand-made .pvs content for the format and fuzz tests, and helpers that
 // know the documented byte layout (docs/pvs-format.md) to reach into encoded files.

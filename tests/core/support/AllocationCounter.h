@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Counts every global operator new in the test executable that links AllocationCounter.cpp, so
 // tests can show that a query phase allocates nothing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "BoxScenes.h"
 
 namespace osgVis::test

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Scenes of axial boxes for core tests: box objects with their triangles, and a small city of
 // blocks, buildings and street furniture.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Exact-visibility reference for core tests (no GL, shares no code with any culler): casts rays
 // through a dense, deterministic jittered grid of samples over the viewport and reports every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Mutation fuzzing of the glTF reader (deterministic seed): byte flips, truncations, duplicated and
 // deleted chunks and numbers replaced by extreme values, on .gltf JSON and on a .glb's JSON chunk
 // (its lengths fixed up so the mutant gets past the header) as well as its raw bytes. Each mutant is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgdb_gltf rendered offscreen (256 × 256, Mesa under Xvfb) against reference images checked by eye
 // when they were stored (reference/*.png: the textured box shows the Cesium logo on every face, the
 // engine its blocks, pistons and crankshaft). Camera: looking at the model's bounding sphere centre

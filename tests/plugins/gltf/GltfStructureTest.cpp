@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What osgdb_gltf makes of real Khronos sample models (Debian's assimp-testmodels): exact counts,
 // bounds, names, materials and modes; malformed files as ReadResult errors naming the problem.
 #include "GltfTestModels.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "GltfTestModels.h"
 
 #include <osg/MatrixTransform>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The Khronos sample models Debian's assimp-testmodels installs, and small helpers the glTF plugin
 // tests share: reading through osgDB and counting what a loaded scene holds.

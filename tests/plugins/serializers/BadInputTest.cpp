@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Damaged files with osgVis nodes: the reader answers an error or warns and gives a sane node; it
 // never crashes, never throws, and never trusts a count more than the data behind it.
 #include "SerializerScenes.h"

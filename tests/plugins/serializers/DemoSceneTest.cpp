@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // data/osgvis-demo.osgt, the scene the README opens in stock osgviewer, is makeDemoScene() as written by
 // this plugin. Regenerate it with --gtest_also_run_disabled_tests --gtest_filter=DemoScene.DISABLED_*.
 #include "SceneComparison.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stock osgconv (Debian's openscenegraph) converts osgVis scenes between .osgt and .osgb keeping the
 // osgVis classes: osgDB finds osgdb_serializers_osgvis on OSG_LIBRARY_PATH by the class names alone.
 #include "SceneComparison.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stock osgviewer (Debian's openscenegraph) opens data/osgvis-demo.osgt and culls with osgVis: from
 // its home eye (on the bound's -Y side looking +Y, Z up; osgGA::CameraManipulator::computeHomePosition)
 // the wall hides all ten boxes. ViewCuller reports extractions at INFO and each cull at DEBUG_INFO.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // osgVis nodes written by osgDB in each serializer format and read back: every property, class, name
 // and child the same, and the loaded graph extracts to the same occluders, cells and portals.
 #include "SceneComparison.h"

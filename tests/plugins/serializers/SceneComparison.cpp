@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "SceneComparison.h"
 
 #include <osgVis/Cell>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Exact comparison of two osgVis graphs (properties, classes, children) and of their extractions,
 // shared by the in-process round trip and the osgconv round trip.

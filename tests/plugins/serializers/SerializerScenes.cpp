@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "SerializerScenes.h"
 
 #include "../../osg/TestScenes.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The osgVis graphs the serializer tests write and read, and the demo scene of data/osgvis-demo.osgt.
 // Coordinates are multiples of 1/8 so that ascii files (6 significant digits) keep them exactly.

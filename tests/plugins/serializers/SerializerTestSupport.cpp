@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "SerializerTestSupport.h"
 
 #include <osgDB/ReaderWriter>

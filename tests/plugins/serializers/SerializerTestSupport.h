@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What the serializer tests share: the built plugins first on osgDB's library path, writing and
 // reading a node through a format's ReaderWriter and a string, and catching OSG's warnings.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/api/ModuleRegistry.h>
 
 #include <osgVis/core/cellportal/CellPortalModule.h>

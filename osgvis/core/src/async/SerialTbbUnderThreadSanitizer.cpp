@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ThreadSanitizer builds only (OSGVIS_TSAN): Debian's libtbb is not instrumented, so TSan cannot see
 // the happens-before edges of TBB's scheduler (task hand-over, small-object pool reuse) and reports
 // every parallel_for body as a race. A TSan build therefore runs TBB loops on the calling thread;

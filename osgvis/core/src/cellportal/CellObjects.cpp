@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "CellObjects.h"
 
 namespace osgVis::core

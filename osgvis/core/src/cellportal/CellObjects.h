@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which objects each cell holds: an object is incident on every cell its bounds meet. Objects that
 // precomputed visibility may not judge (dynamic, unknown bounds, outside every cell) are listed as

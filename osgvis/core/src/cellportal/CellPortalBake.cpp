@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/cellportal/CellPortalBake.h>
 
 #include <osgVis/core/cellportal/PortalStabbing.h>

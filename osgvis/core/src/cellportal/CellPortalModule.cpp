@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/cellportal/CellPortalModule.h>
 
 #include <osgVis/core/cellportal/PortalStabbing.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Automatic cell subdivision after Teller & Séquin, "Visibility Preprocessing for Interactive
 // Walkthroughs" (SIGGRAPH '91): a kd-tree over the scene box split along the planes that opaque
 // axial faces cover most (union of the faces in the node's cross-section over its area), breadth

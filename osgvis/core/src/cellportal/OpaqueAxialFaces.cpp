@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Opaque axial faces for cell subdivision: the object-space occluder polygons (same eligibility,
 // welding and coplanar merging), keeping only two-sided ones that are exactly axis-aligned
 // rectangles. One-sided polygons hide from one side only, so a cell boundary behind them is open.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Portal enumeration: neighbours across each cell's upper faces by kd-tree query, then the shared
 // rectangle minus the opaque faces lying in its plane (exact grid subtraction).
 #include "PortalEnumeration.h"

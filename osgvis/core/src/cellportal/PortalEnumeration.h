@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Portals of a cell graph: for every pair of face-adjacent cells, the part of their shared
 // rectangle that no opaque axial face in that plane covers, as disjoint axial rectangles.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Line stabbing of axial portal sequences after Teller & Séquin, "Visibility Preprocessing for
 // Interactive Walkthroughs" (SIGGRAPH '91) and Teller's thesis (1992): a line crosses an oriented
 // convex polygon iff its Plücker side operator with every edge has one sign, which is linear in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Rectangle-set algebra for cell subdivision: union area by a sweep over u with a segment tree over
 // v (coverage counts), and subtraction on the grid of all rectangle edges, whose free grid cells are
 // merged into maximal row runs and those into vertical stacks of equal runs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Sets of axis-aligned rectangles in one plane (u, v coordinates of an AxialRect): the area of their
 // union and the exact difference "a rectangle minus a union of rectangles" as few disjoint rectangles.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stated cells and portals: the modeller's boxes are the cells; each portal polygon is turned into
 // the axial rectangle the run-time and bake expect.
 #include "SubdivisionStatedCells.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Cells and portals a modeller stated with osgVis::Cell / osgVis::Portal markers, as a cell graph.
 #include <osgVis/core/cellportal/CellSubdivision.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The one length below which cell subdivision treats two coordinates as equal: a little above what
 // single-precision triangle storage moves a vertex, far below any real gap (a 1 cm slit survives).

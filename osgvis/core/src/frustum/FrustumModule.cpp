@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hierarchical view-frustum culling with plane masking (Assarsson & Möller, "Optimized View Frustum
 // Culling Algorithms for Bounding Boxes", 2000): a node inside a plane stops testing against it below.
 #include <osgVis/core/frustum/FrustumModule.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/geometry/Aabb.h>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Newell's normal (as in Sutherland, Sproull & Schumacker 1974) and Sutherland–Hodgman clipping
 // (Sutherland & Hodgman, "Reentrant Polygon Clipping", 1974) against one plane.
 #include <osgVis/core/geometry/ConvexPolygon.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Plane extraction after Gribb & Hartmann, "Fast Extraction of Viewing Frustum Planes from the
 // World-View-Projection Matrix" (2001); box test with the p-/n-vertex of each plane.
 #include <osgVis/core/geometry/Frustum.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/mask/MaskModule.h>
 
 #include "MaskOccluderGroups.h"

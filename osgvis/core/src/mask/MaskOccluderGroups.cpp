@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "MaskOccluderGroups.h"
 
 #include <algorithm>

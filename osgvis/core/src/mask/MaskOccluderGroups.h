@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Turns the critical frame's occluder polygons into rasterizer groups: polygons that face the eye
 // the same way from every point of their δ-ball (δ from each polygon's nearest point), connected through shared edges, clipped to the

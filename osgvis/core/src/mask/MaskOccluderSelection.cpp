@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "MaskOccluderSelection.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Occluder selection of the mask method: a priority queue over kd-tree nodes, nearest first from
 // the eye, gathers candidate occluder objects inside the view; the best R by the chosen measure

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The critical frame's camera as the mask sees it: world → eye → mask coordinates, the depth plane
 // of an occluder polygon over the mask, the clip planes that bound what gets rasterized, and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Internal to the mask rasterizer: its inner loop exists twice, SSE2 (4 pixels per step) and
 // portable scalar code doing the same float operations lane by lane. Both are reachable here so a

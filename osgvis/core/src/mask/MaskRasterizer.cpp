@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Conservative rasterization of occluder groups into the occlusion mask (the "fully covered pixels
 // only" mask of Wang, Agarwal & Har-Peled). Per polygon, signed edge distances decide for every
 // pixel square (grown by the shrink) whether it touches the polygon (separating-axis test on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Occlusion mask and its max-depth pyramid, after Zhang et al.'s hierarchical occlusion maps as
 // used by Wang, Agarwal & Har-Peled's on-line mask method (max depth per texel instead of opacity).
 #include <osgVis/core/mask/OcclusionMask.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/module/ModuleChain.h>
 
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "BoundaryLoop.h"
 
 #include <osgVis/core/geometry/Aabb.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Geometry of a planar boundary loop given as welded vertex ids (counter-clockwise around a
 // normal): how it turns at each vertex, which vertices are only straight-line points, and whether

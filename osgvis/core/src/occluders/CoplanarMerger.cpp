@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "CoplanarMerger.h"
 
 #include "BoundaryLoop.h"

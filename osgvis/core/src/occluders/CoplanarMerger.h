@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Merges the triangles of one object into convex polygons: triangles that share an edge (found
 // through OpenMesh half-edge connectivity) and lie in one plane grow into a region; a region whose

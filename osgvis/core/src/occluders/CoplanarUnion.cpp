@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/occluders/CoplanarUnion.h>
 
 #include <algorithm>

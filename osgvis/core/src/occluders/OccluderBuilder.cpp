@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Occluder polygons from scene geometry: weld, connect (OpenMesh), merge coplanar neighbours into
 // convex polygons, then link polygons across the edges they share.
 #include <osgVis/core/occluders/OccluderBuilder.h>

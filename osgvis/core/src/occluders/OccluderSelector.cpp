@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Area-angle occluder choice over an octree of eye cells (after Coorg & Teller's dynamic
 // selection): per cell, the polygons that can look large enough from somewhere inside it.
 #include <osgVis/core/occluders/OccluderSelector.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Joins vertices closer than a tolerance into one id, through a hash grid whose cells are much
 // wider than the tolerance, so a query mostly looks at its own cell only.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/octree/BoxOcclusion.h>
 
 #include <algorithm>

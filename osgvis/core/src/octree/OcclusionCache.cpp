@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "OcclusionCache.h"
 
 namespace osgVis::core

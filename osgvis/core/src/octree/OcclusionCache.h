@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Temporal coherence of the octree module: each box (tree node or object) keeps the planes of the
 // occluders it met in recent frames, which do not depend on the eye, and the occluder that

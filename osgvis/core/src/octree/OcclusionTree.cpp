@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "OcclusionTree.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Occluder fusion for occluders that share no edge: an occlusion tree (after Bittner, Havran &
 // Slavík, "Hierarchical visibility culling with occlusion trees"), a BSP tree over the directions

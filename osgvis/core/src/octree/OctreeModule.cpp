@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Object-space occlusion culling after Coorg & Teller. Per frame: pick the k best occluders for
 // the eye (area-angle, from the eye's cell), drop those the renderer may not draw (in front of the
 // near plane), then walk the kd-tree: frustum planes and occluders together, whole subtrees

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Point and box location in a cell graph: kd-tree descent, taking both children where the query
 // comes within tolerance of the split, so points on a shared boundary find every cell they touch.
 #include <osgVis/core/pvs/CellGraph.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320, as zlib and PNG use): catches every burst
 // error up to 32 bits and any odd number of flipped bits, which is what a file checksum must do.

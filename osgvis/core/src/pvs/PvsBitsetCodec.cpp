@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "PvsBitsetCodec.h"
 
 namespace osgVis::core

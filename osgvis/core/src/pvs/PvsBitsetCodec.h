@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Run-length coding of a VisibleSet for the `.pvs` file: the number of runs, then alternating runs
 // of clear and set bits (the first run is clear and may be empty, every later run is non-empty) as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "PvsByteStream.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The primitive encoding of the `.pvs` file (docs/pvs-format.md): little-endian fixed-width
 // integers, IEEE-754 doubles by bit pattern, LEB128 varints and length-prefixed strings, written

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The `.pvs` file, version 1; docs/pvs-format.md is the byte-level description this code follows.
 #include <osgVis/core/pvs/PvsFormat.h>
 

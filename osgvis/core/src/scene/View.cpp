@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/scene/View.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <osgVis/core/spatial/KdTree.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: Aabb.h moved to <osgVis/core/geometry/Aabb.h>. Include that path;

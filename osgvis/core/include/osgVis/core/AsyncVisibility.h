@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: AsyncVisibility.h moved to <osgVis/core/async/AsyncVisibility.h>. Include that path;

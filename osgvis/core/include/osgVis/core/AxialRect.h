@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: AxialRect.h moved to <osgVis/core/geometry/AxialRect.h>. Include that path;

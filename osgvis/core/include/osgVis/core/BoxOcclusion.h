@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: BoxOcclusion.h moved to <osgVis/core/octree/BoxOcclusion.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: CellGraph.h moved to <osgVis/core/pvs/CellGraph.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: CellPortalBake.h moved to <osgVis/core/cellportal/CellPortalBake.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: CellPortalData.h moved to <osgVis/core/pvs/CellPortalData.h>. Include that path;

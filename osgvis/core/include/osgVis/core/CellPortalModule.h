@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: CellPortalModule.h moved to <osgVis/core/cellportal/CellPortalModule.h>. Include that path;

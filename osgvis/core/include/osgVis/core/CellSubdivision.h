@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: CellSubdivision.h moved to <osgVis/core/cellportal/CellSubdivision.h>. Include that path;

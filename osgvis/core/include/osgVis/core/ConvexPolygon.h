@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: ConvexPolygon.h moved to <osgVis/core/geometry/ConvexPolygon.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: DebugRecord.h moved to <osgVis/core/scene/DebugRecord.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: Frustum.h moved to <osgVis/core/geometry/Frustum.h>. Include that path;

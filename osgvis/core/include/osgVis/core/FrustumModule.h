@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: FrustumModule.h moved to <osgVis/core/frustum/FrustumModule.h>. Include that path;

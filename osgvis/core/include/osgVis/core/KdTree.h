@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: KdTree.h moved to <osgVis/core/spatial/KdTree.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: MaskKdTree.h moved to <osgVis/core/mask/MaskKdTree.h>. Include that path;

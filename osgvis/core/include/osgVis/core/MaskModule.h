@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: MaskModule.h moved to <osgVis/core/mask/MaskModule.h>. Include that path;

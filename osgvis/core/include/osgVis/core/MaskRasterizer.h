@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: MaskRasterizer.h moved to <osgVis/core/mask/MaskRasterizer.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: Math.h moved to <osgVis/core/geometry/Math.h>. Include that path;

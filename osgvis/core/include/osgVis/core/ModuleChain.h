@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: ModuleChain.h moved to <osgVis/core/module/ModuleChain.h>. Include that path;

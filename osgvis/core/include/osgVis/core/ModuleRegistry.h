@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: ModuleRegistry.h moved to <osgVis/core/api/ModuleRegistry.h>. Include that path;

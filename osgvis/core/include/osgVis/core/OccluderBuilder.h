@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: OccluderBuilder.h moved to <osgVis/core/occluders/OccluderBuilder.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: OccluderPolygon.h moved to <osgVis/core/occluders/OccluderPolygon.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: OccluderSelector.h moved to <osgVis/core/occluders/OccluderSelector.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: OcclusionMask.h moved to <osgVis/core/mask/OcclusionMask.h>. Include that path;

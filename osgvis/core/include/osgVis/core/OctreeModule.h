@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: OctreeModule.h moved to <osgVis/core/octree/OctreeModule.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: Plane.h moved to <osgVis/core/geometry/Plane.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: PortalStabbing.h moved to <osgVis/core/cellportal/PortalStabbing.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: PvsFormat.h moved to <osgVis/core/pvs/PvsFormat.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: Scene.h moved to <osgVis/core/scene/Scene.h>. Include that path;

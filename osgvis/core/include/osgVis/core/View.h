@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: View.h moved to <osgVis/core/scene/View.h>. Include that path;

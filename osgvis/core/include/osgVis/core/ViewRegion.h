@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: ViewRegion.h moved to <osgVis/core/scene/ViewRegion.h>. Include that path;

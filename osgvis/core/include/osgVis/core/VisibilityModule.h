@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: VisibilityModule.h moved to <osgVis/core/module/VisibilityModule.h>. Include that path;

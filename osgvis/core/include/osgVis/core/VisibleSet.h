@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: VisibleSet.h moved to <osgVis/core/scene/VisibleSet.h>. Include that path;

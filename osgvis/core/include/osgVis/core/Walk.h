@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Forwarding header kept for one release: Walk.h moved to <osgVis/core/scene/Walk.h>. Include that path;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A closed axis-aligned box as one drawable: what the dynamic bench walk and the viewer's building
 // tool drop into a scene (cars, new buildings) during a walk.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Seeded test scenes and their walks: the office floor, the city and the field of tetrahedra of the
 // papers' benchmarks, scaled by a triangle budget, plus a set of small adversarial scenes that every

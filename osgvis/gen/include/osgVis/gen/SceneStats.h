@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a scene graph draws, counted the way the culling metrics count it: one object per drawable
 // instance (a drawable reached through two paths counts twice), and the triangles of each instance.

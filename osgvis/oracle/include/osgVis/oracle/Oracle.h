@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // The exact-visibility oracle: ID-buffer render of the real OSG graph, and CPU ray casting.

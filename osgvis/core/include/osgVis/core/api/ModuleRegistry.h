@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Creates visibility modules by mode name. Later modules register here so every app and test

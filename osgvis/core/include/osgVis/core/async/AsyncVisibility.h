@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Asynchronous visibility: a worker thread computes, with its own module chain, the visible set of

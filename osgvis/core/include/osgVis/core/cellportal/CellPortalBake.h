@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// The cell-portal bake: subdivision, then per source cell a depth-first search over portal

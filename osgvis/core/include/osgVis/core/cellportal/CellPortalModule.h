@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Cell-and-portal visibility after Teller & Séquin, "Visibility Preprocessing for Interactive

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Cell subdivision after Teller & Séquin: a kd-tree split along the model's large axial opaque faces

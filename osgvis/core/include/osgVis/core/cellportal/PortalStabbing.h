@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Line-stabbing geometry of cell-and-portal visibility (Teller & Séquin) for axial portals. Every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Hierarchical view-frustum culling over a kd-tree: the baseline every occlusion module must beat.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Axis-aligned bounding box. An empty box has min > max and contains nothing.

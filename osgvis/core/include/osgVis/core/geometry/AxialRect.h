@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// A rectangle lying in an axis-aligned plane (a cell face, a portal, an opaque axial face).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Planar convex polygon (counter-clockwise seen from the side its normal points to), with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// View frustum as six inward-facing planes, built from a view-projection matrix (OpenGL clip

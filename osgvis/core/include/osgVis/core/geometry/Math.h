@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Vector types of the core. Geometry runs in double precision (robust plane tests); bulk triangle

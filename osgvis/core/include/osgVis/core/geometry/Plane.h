@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Oriented plane n·p + d = 0; positive distance is the "inside" (kept) half-space.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// A small dense linear program: maximize c·x subject to A x <= b, equality rows and variable

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// The kd-tree of the mask method: nodes with their 3-D boxes and object counts, the marks of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Online occlusion culling with occlusion masks after Wang, Agarwal & Har-Peled, "An On-line

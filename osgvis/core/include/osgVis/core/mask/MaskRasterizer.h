@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Conservative software rasterization of occluders into an OcclusionMask: only pixels that a group

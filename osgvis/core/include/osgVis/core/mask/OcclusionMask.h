@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// The occlusion mask of the online mask method (Wang, Agarwal & Har-Peled, after hierarchical

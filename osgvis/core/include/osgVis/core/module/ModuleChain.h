@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Modules composed in sequence: each stage only refines the previous stage's answer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// The visibility API between a renderer and a visibility algorithm: a scene description the module

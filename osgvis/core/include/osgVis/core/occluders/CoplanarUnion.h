@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Larger occluders from coplanar polygons of different objects: two wall pieces that abut or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Turns a scene into occluder polygons: welds identical vertices, finds shared edges (OpenMesh

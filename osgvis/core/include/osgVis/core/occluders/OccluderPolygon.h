@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Occluders of the object-space methods: convex planar polygons taken from the scene's own opaque

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Dynamic occluder choice (Coorg & Teller): a polygon is worth testing when its area-angle

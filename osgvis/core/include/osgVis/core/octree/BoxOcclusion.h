@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Occlusion of an axial box (a tree node) by convex occluder polygons from a viewpoint, after

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Object-space occlusion culling after Coorg & Teller, "A Spatially and Temporally Coherent Object

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// The cells of a cell-and-portal subdivision: axis-aligned leaf boxes of a kd-tree (or boxes a

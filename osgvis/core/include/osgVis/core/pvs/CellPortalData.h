@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Everything a cell-portal bake produces and a `.pvs` file stores: the cells and portals, per

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// The `.pvs` file (docs/pvs-format.md): versioned little-endian binary holding CellPortalData and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// What a module decided in its last query, for debug views (the viewer's top-down map): tree

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Renderer-independent scene model: the objects a visibility module culls, the triangles they are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// A model's identity for the data baked from it (a `.pvs` file refuses a model that does not match).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// A region of viewpoints: every eye inside an axial box, looking in any direction, with a

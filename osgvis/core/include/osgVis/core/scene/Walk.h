@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// Walk paths: a timed sequence of viewpoints with one fixed projection, stored as text

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 /// @file
 /// kd-tree over object bounds (median split on the longest axis) with front-to-back traversal.
