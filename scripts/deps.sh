@@ -6,9 +6,9 @@ set -euo pipefail
 packages=(
     build-essential cmake pkg-config
     libopenscenegraph-dev openscenegraph
-    libglfw3-dev libglm-dev libopenmesh-dev libtinygltf-dev libtbb-dev
+    libglfw3-dev libglm-dev libopenmesh-dev libtinygltf-dev libtbb-dev libembree-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    assimp-testmodels doxygen
+    assimp-testmodels doxygen chromium
     xvfb xauth x11-utils libgl1-mesa-dri mesa-utils
 )
 missing=()

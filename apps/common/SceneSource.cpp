@@ -1,23 +1,61 @@
 // SPDX-License-Identifier: MIT
 #include "SceneSource.h"
 
-#include "AutoWalk.h"
+#include "OrbitWalk.h"
+#include "FreeSpaceWalk.h"
 
 #include <osgVis/VisibilityGroup>
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/gen/Generator.h>
 
+#include <osg/NodeVisitor>
 #include <osgDB/ReadFile>
 #include <osgDB/Registry>
 
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 namespace osgVis::apps
 {
 namespace
 {
+// OSG 3.6.5's bsp plugin (Quake 3 levels) attaches PolygonMode LINE to every face with the value
+// OFF, meaning it off; but OSG applies an attribute whatever its value (ON/OFF mean something only
+// for modes, and OFF is setAttribute's default), so the level draws as wireframe and nothing hides
+// anything. For .bsp files the PolygonMode attributes are removed.
+class PolygonModeRemover : public osg::NodeVisitor
+{
+public:
+    PolygonModeRemover() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    unsigned removed = 0;
+
+    void apply(osg::Node& node) override
+    {
+        clean(node.getStateSet());
+        traverse(node);
+    }
+    void apply(osg::Drawable& drawable) override { clean(drawable.getStateSet()); }
+
+private:
+    void clean(osg::StateSet* stateSet)
+    {
+        if (stateSet && stateSet->getAttribute(osg::StateAttribute::POLYGONMODE))
+        {
+            stateSet->removeAttribute(osg::StateAttribute::POLYGONMODE);
+            ++removed;
+        }
+    }
+};
+
+bool hasExtension(const std::string& path, const std::string& wanted)
+{
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    return extension == wanted;
+}
+
 osg::ref_ptr<osg::Node> readModel(const std::string& path)
 {
     std::error_code error;
@@ -26,6 +64,14 @@ osg::ref_ptr<osg::Node> readModel(const std::string& path)
     osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(path);
     if (!model)
         throw SceneError("cannot read scene '" + path + "': no OpenSceneGraph plugin could load it");
+    if (hasExtension(path, ".bsp"))
+    {
+        PolygonModeRemover remover;
+        model->accept(remover);
+        if (remover.removed)
+            std::cerr << "scene '" << path << "': removed the wireframe PolygonMode OSG's bsp plugin put on "
+                      << remover.removed << " faces\n";
+    }
     return model;
 }
 
@@ -52,9 +98,7 @@ std::string walkBeside(const std::string& scenePath)
 
 bool isPvsPath(const std::string& path)
 {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    return extension == ".pvs";
+    return hasExtension(path, ".pvs");
 }
 
 // The plugin's verdict on the baked data, from the group's descriptions.
@@ -119,6 +163,45 @@ osg::ref_ptr<osg::Node> readPvsScene(const std::string& path)
     return group->getChild(0);
 }
 
+core::Walk orbitWalk(LoadedScene& scene)
+{
+    try
+    {
+        scene.walkSource = "automatic orbit";
+        return makeOrbitWalk(scene.objects->scene.bounds());
+    }
+    catch (const std::invalid_argument& e)
+    {
+        throw SceneError("scene '" + scene.name + "' has no walk and no usable bounds for one: " + e.what());
+    }
+}
+
+// The walk through the model's free space; with `orbitIfNone`, an orbit when it finds no eye.
+core::Walk freeSpaceWalk(LoadedScene& scene, bool orbitIfNone)
+{
+    // note: the walk needs the triangles, which the scene's own extraction leaves out.
+    const osg::ref_ptr<ExtractedScene> withTriangles = extractScene(*scene.model, ExtractionOptions{true});
+    try
+    {
+        const RayScene rays(withTriangles->scene);
+        FreeSpaceWalkReport report;
+        core::Walk walk = makeFreeSpaceWalk(rays, {}, &report);
+        std::ostringstream source;
+        source << "automatic walk (" << report.stations << " eyes of " << report.eyes << " found from "
+               << report.candidates << " floor points; eye height " << report.eyeHeight << ": " << report.eyeHeightRule
+               << "; rejected " << report.openSky << " under open sky, " << report.nearWall << " next to a wall, " << report.lowCeiling << " under low ceilings, " << report.insideSolid
+               << " inside solid geometry)";
+        scene.walkSource = source.str();
+        return walk;
+    }
+    catch (const std::runtime_error& e)
+    {
+        if (!orbitIfNone)
+            throw SceneError("scene '" + scene.name + "': no automatic walk: " + e.what());
+        std::cerr << "scene '" << scene.name << "': no automatic walk (" << e.what() << "); orbiting it instead\n";
+        return orbitWalk(scene);
+    }
+}
 } // namespace
 
 LoadedScene loadScene(const SceneRequest& options)
@@ -156,24 +239,21 @@ LoadedScene loadScene(const SceneRequest& options)
         throw SceneError("scene '" + result.name + "' has no drawables: nothing to walk through");
 
     std::string walkPath = options.walkPath;
+    bool walkChosenForUser = false; // the automatic walk may then fall back to an orbit
     if (walkPath.empty() && options.generateKind.empty())
+    {
         walkPath = isPvsPath(options.scenePath) ? walkForPvs(options.scenePath) : walkBeside(options.scenePath);
-    if (!walkPath.empty())
+        if (walkPath.empty())
+            walkPath = "auto", walkChosenForUser = true;
+    }
+    if (walkPath == "auto")
+        result.walk = freeSpaceWalk(result, walkChosenForUser);
+    else if (walkPath == "orbit")
+        result.walk = orbitWalk(result);
+    else if (!walkPath.empty())
     {
         result.walk = readWalk(walkPath);
         result.walkSource = walkPath;
-    }
-    else if (result.walkSource.empty())
-    {
-        try
-        {
-            result.walk = makeOrbitWalk(result.objects->scene.bounds());
-        }
-        catch (const std::invalid_argument& e)
-        {
-            throw SceneError("scene '" + result.name + "' has no walk and no usable bounds for one: " + e.what());
-        }
-        result.walkSource = "automatic orbit";
     }
     if (result.walk.keys.empty())
         throw SceneError("walk '" + result.walkSource + "' has no views");

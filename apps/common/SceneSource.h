@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Where an app's scene and walk come from (osgvisviewer and osgvisbench load them the same way): a
-// model file (with the walk beside it, a walk given by --walk, or an automatic orbit), a baked `.pvs`
-// file (the model it names, with its baked cell-portal data registered for the cellportal modes) or
-// a generated scene with its own walk.
+// model file (with the walk beside it, a walk given by --walk, or an automatic walk through its free
+// space), a baked `.pvs` file (the model it names, with its baked cell-portal data registered for
+// the cellportal modes) or a generated scene with its own walk. `--walk auto` and `--walk orbit`
+// ask for the automatic walk (FreeSpaceWalk.h) or an orbit around the model (OrbitWalk.h) whatever
+// the scene has.
 
 #include <osgVis/SceneExtractor>
 #include <osgVis/core/scene/Walk.h>
@@ -28,7 +30,10 @@ struct SceneRequest
     std::string generateKind;         // a generator kind ("office", "city", ...) or empty
     std::uint64_t triangles = 200000; // size knob of a generated scene
     std::uint32_t seed = 1;           // seed of a generated scene
-    std::string walkPath;             // empty: SCENE's stem + ".walk", else an automatic walk
+    // A walk file, "auto" (through the model's free space), "orbit" (around it), or empty: SCENE's
+    // stem + ".walk" if there is one, the generator's walk with generateKind, else "auto" (an orbit
+    // when no eye can be found in the model).
+    std::string walkPath;
     unsigned width = 0, height = 0;   // pixels; 0 keeps the walk's own size
 };
 
@@ -39,7 +44,7 @@ struct LoadedScene
     osg::ref_ptr<ExtractedScene> objects;
     core::Walk walk;             // size already overridden by --size
     std::string name;            // for messages and reports
-    std::string walkSource;      // "path.walk", "generated" or "automatic orbit"
+    std::string walkSource;      // "path.walk", "generated", "automatic walk (...)" or "automatic orbit"
 };
 
 // Throws SceneError with a message that names the file at fault (unreadable model, empty scene,

@@ -4,7 +4,7 @@
 #include <CameraSetup.h>
 #include "CullingModes.h"
 #include "DebugMap.h"
-#include "FrameCapture.h"
+#include <FrameCapture.h>
 #include "RunReport.h"
 
 #include <osgVis/oracle/OffscreenContext.h>
@@ -50,7 +50,7 @@ bool prepareOutputDirectory(const std::string& directory)
 }
 
 // Draws one frame and returns the pixels the camera's final draw callback read back.
-osg::ref_ptr<osg::Image> drawFrame(osgViewer::Viewer& viewer, FrameCapture& capture, double time)
+osg::ref_ptr<osg::Image> drawFrame(osgViewer::Viewer& viewer, apps::FrameCapture& capture, double time)
 {
     capture.arm();
     viewer.frame(time);
@@ -109,7 +109,7 @@ int renderHeadless(const apps::LoadedScene& scene, const ViewerOptions& options)
     camera->setDrawBuffer(GL_BACK);
     camera->setReadBuffer(GL_BACK);
     apps::applyWalkProjection(*camera, walk.projection, walk.aspect());
-    osg::ref_ptr<FrameCapture> capture = new FrameCapture;
+    osg::ref_ptr<apps::FrameCapture> capture = new apps::FrameCapture;
     camera->setFinalDrawCallback(capture.get());
     map.setObservedCamera(camera);
     map.setViewport(0, 0, int(width), int(height));

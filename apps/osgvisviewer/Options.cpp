@@ -114,7 +114,7 @@ std::string usageText(const std::string& programName)
 {
     std::ostringstream out;
     out << "usage: " << programName
-        << " [SCENE] [--mode M] [--walk FILE] [--record FILE] [--headless OUTDIR] [--size WxH]\n"
+        << " [SCENE] [--mode M] [--walk FILE|auto|orbit] [--record FILE] [--headless OUTDIR] [--size WxH]\n"
            "       [--generate office|city|floor|tetra] [--triangles N] [--seed S]\n"
            "       [--threading MODEL] [--async on|off] [--help]\n"
            "\n"
@@ -124,8 +124,9 @@ std::string usageText(const std::string& programName)
            "  SCENE              model file; its walk is SCENE's stem + .walk when that file exists\n"
            "  --mode M           osg (OSG's own culling) or a module chain, e.g. frustum or frustum+octree\n"
            "                     (default frustum; cellportal for a .pvs); an unknown mode lists the known ones\n"
-           "  --walk FILE        walk path (docs/walk-format.md); default: the walk beside SCENE, the\n"
-           "                     generator's walk with --generate, else an orbit around the scene\n"
+           "  --walk FILE|auto|orbit  walk file (docs/walk-format.md), auto (eyes at a person's height in\n"
+           "                     the model's free space) or orbit (around it); default: the walk beside\n"
+           "                     SCENE, the generator's walk with --generate, else auto\n"
            "  --record FILE      where key r saves the recorded eye path\n"
            "  --headless OUTDIR  render every view of the walk offscreen to OUTDIR/frame-NNNN.png,\n"
            "                     map-NNNN.png and report.{json,txt}; needs an X display (xvfb-run)\n"

@@ -6,7 +6,7 @@
 // description at places where no object lies.
 #include "../../apps/osgvisviewer/CullingModes.h"
 #include "../../apps/osgvisviewer/DebugMap.h"
-#include "../../apps/osgvisviewer/FrameCapture.h"
+#include <FrameCapture.h>
 #include "AppProcess.h"
 #include "RecordingTestModule.h"
 
@@ -70,7 +70,7 @@ RenderedMap renderMap(const std::string& mode)
     camera->setReadBuffer(GL_BACK);
     camera->setProjectionMatrixAsPerspective(60.0, 1.0, 0.1, 100.0);
     camera->setViewMatrixAsLookAt(osg::Vec3d(5, -20, 0.5), osg::Vec3d(5, 0, 0.5), osg::Vec3d(0, 0, 1));
-    osg::ref_ptr<viewer::FrameCapture> capture = new viewer::FrameCapture;
+    osg::ref_ptr<apps::FrameCapture> capture = new apps::FrameCapture;
     camera->setFinalDrawCallback(capture.get());
     map.setObservedCamera(camera);
     map.setViewport(0, 0, MapSize, MapSize);

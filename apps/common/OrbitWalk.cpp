@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "AutoWalk.h"
+#include "OrbitWalk.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 namespace osgVis::apps
 {
-core::Walk makeOrbitWalk(const core::Aabb& bounds, const AutoWalkOptions& options)
+core::Walk makeOrbitWalk(const core::Aabb& bounds, const OrbitWalkOptions& options)
 {
     if (bounds.empty() || !std::isfinite(bounds.min.x + bounds.min.y + bounds.min.z + bounds.max.x +
                                          bounds.max.y + bounds.max.z))

@@ -3,7 +3,7 @@
 
 #include <osg/RenderInfo>
 
-namespace osgVis::viewer
+namespace osgVis::apps
 {
 void FrameCapture::arm()
 {
@@ -35,4 +35,4 @@ void FrameCapture::operator()(osg::RenderInfo& renderInfo) const
     _image = image;
     _armed = false;
 }
-} // namespace osgVis::viewer
+} // namespace osgVis::apps

@@ -8,7 +8,7 @@
 
 #include <mutex>
 
-namespace osgVis::viewer
+namespace osgVis::apps
 {
 class FrameCapture : public osg::Camera::DrawCallback
 {
@@ -25,4 +25,4 @@ private:
     mutable bool _armed = false;
     mutable osg::ref_ptr<osg::Image> _image;
 };
-} // namespace osgVis::viewer
+} // namespace osgVis::apps

@@ -8,7 +8,7 @@
 
 namespace osgVis::apps
 {
-struct AutoWalkOptions
+struct OrbitWalkOptions
 {
     unsigned views = 120;            // keys on one full turn
     double secondsPerTurn = 12.0;    // time stamps run from 0 to this
@@ -19,5 +19,5 @@ struct AutoWalkOptions
 };
 
 // Throws std::invalid_argument for empty or non-finite bounds.
-core::Walk makeOrbitWalk(const core::Aabb& bounds, const AutoWalkOptions& options = {});
+core::Walk makeOrbitWalk(const core::Aabb& bounds, const OrbitWalkOptions& options = {});
 } // namespace osgVis::apps
