@@ -93,17 +93,21 @@ void parseSize(const std::string& text, unsigned& width, unsigned& height)
 std::string benchUsage()
 {
     return "usage: osgvisbench (--scene FILE | --generate office|city|floor|tetra [--triangles N] [--seed S])\n"
-           "                   [--walk FILE] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
+           "                   [--walk FILE|auto|orbit] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
            "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
            "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8]\n"
            "                   [--mask-slowdown K] [--cull-only]\n"
            "                   [--dynamic] [--threading MODEL,...] [--async on|off|on,off]\n"
            "                   [--async-lookahead N]\n"
-           "                   [--json OUT.json] [--help]\n"
+           "                   [--json OUT.json] [--report DIR [--pictures N]] [--help]\n"
            "\n"
            "Renders every mode over the same walk in one process and measures it against the\n"
            "exact-visibility oracle (docs/benchmark.md). A module chain is written with '+'.\n"
            "Default modes: osg,frustum,exact.\n"
+           "--walk: a walk file (docs/walk-format.md), auto (eyes at a person's height in the model's\n"
+           "  free space, never inside solid geometry) or orbit (around the model). Default: the walk\n"
+           "  beside the scene, the generator's walk with --generate, else auto (an orbit when the\n"
+           "  model has nowhere to stand).\n"
            "--cube: every walk key becomes six 90-degree square views (HxH, H the walk's height),\n"
            "  the faces of a cube around the eye, so every metric covers the full sphere.\n"
            "--speeds, --threads: also time each module-chain mode's cull alone (no rendering) with\n"
@@ -136,6 +140,13 @@ std::string benchUsage()
            "  synchronous rows the views whose drawn set differs from the main table's pass. Set\n"
            "  LP_NUM_THREADS (Mesa) when timing: llvmpipe's threads compete for the same cores.\n"
            "--async-lookahead N: frames of predicted eye path an async region covers (default 4).\n"
+           "--report DIR: also write DIR/index.html, one self-contained page (inline SVG, nothing\n"
+           "  fetched): the table, per-view plots of drawn triangles for every mode against exact and of\n"
+           "  cull ms, false-invisible markers, the progressive and threading tables, and N side-by-side\n"
+           "  pictures DIR/view-NNNN.png (--pictures N, default 6, 0 for none) of views spread over the\n"
+           "  walk: osg's frame | the best mode's frame | a top-down map of what the best mode drew\n"
+           "  (green), culled in the frustum (red), left outside it (grey), and the frustum (yellow).\n"
+           "  The best mode is the conservative module chain with the highest fps.\n"
            "Every rendered mode also gets its mis-drawn pixels: pixels of the oracle's exact image\n"
            "  (display resolution) showing an object the mode culled (where the oracle counts\n"
            "  pixels per object). Approximate modes report false-invisible objects, never fail.\n"
@@ -178,6 +189,15 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.views = unsigned(parseUnsigned(flag, value()));
         else if (flag == "--size")
             parseSize(value(), options.width, options.height);
+        else if (flag == "--report")
+            options.reportDir = value();
+        else if (flag == "--pictures")
+        {
+            const std::uint64_t count = parseUnsigned(flag, value());
+            if (count > 1000)
+                throw UsageError("--pictures must lie between 0 and 1000");
+            options.pictures = int(count);
+        }
         else if (flag == "--json")
             options.jsonFile = value();
         else if (flag == "--supersample")
@@ -258,6 +278,10 @@ BenchOptions parseBenchOptions(int argc, char** argv)
                          " frames: give fewer --views or a smaller slowdown");
     if (options.threadingTable() && (options.cullOnly || options.dynamic))
         throw UsageError("--threading and --async render the walk: not with --cull-only or --dynamic");
+    if (options.pictures >= 0 && options.reportDir.empty())
+        throw UsageError("--pictures go into the report: give --report DIR too");
+    if (!options.reportDir.empty() && (options.cullOnly || options.dynamic))
+        throw UsageError("--report draws the rendered walk's plots: not with --cull-only or --dynamic");
     if (options.cullOnly && !options.sweeps() && !options.maskSweep())
         throw UsageError("--cull-only needs a sweep: give --speeds, --threads and/or --mask-deltas");
     return options;

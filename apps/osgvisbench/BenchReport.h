@@ -163,5 +163,11 @@ struct BenchReport
     std::vector<ProgressiveRow> progressive; // empty unless a mode has a cellportal stage
     std::vector<MaskSweepRow> maskSweep;     // empty without --mask-deltas
     std::vector<ThreadingRow> threading;     // empty without --threading / --async
+    // --report: side-by-side pictures written beside index.html (file names), the views they show
+    // and the two modes they compare.
+    std::vector<std::string> pictures;
+    std::vector<std::size_t> pictureViews;
+    std::string pictureBaseline, pictureMode;
 };
+
 } // namespace osgVis::bench

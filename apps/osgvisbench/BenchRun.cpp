@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "BenchRun.h"
 
-#include <SceneSource.h>
 #include "BenchViewer.h"
 #include "CullSweep.h"
 #include "DerivedWalks.h"
@@ -14,7 +13,11 @@
 #include "OracleReference.h"
 #include "ProgressiveTable.h"
 #include "ThreadingTable.h"
+#include "ViewPictures.h"
 
+#include <SceneSource.h>
+
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -61,6 +64,10 @@ void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core
         replay = std::make_unique<ExactReplay>(reference);
 
     std::map<std::string, std::vector<core::VisibleSet>> mainPasses; // for the threading table
+    const std::vector<std::size_t> pictured =
+        options.reportDir.empty() ? std::vector<std::size_t>{}
+                                  : pictureViews(views.size(), options.pictures < 0 ? 6u : unsigned(options.pictures));
+    std::map<std::string, ModeFrames> frames; // per mode, for the pictures
     {
     BenchViewer viewer(walk.width, walk.height, walk.projection, *scene.model);
     EmittedObjects emittedObjects(*scene.objects);
@@ -68,12 +75,16 @@ void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core
     {
         osg::ref_ptr<osg::Node> graph = buildModeGraph(mode, *scene.model, *scene.objects);
         viewer.setSceneData(graph.get());
-        const PassResult pass = renderModePass(mode.name, viewer, views, emittedObjects, model.objects.size(),
-                                               [&](std::size_t v)
-                                               {
-                                                   if (mode.kind == BenchMode::Kind::Exact)
-                                                       replay->setCurrentView(v);
-                                               });
+        const auto pointReplay = [&](std::size_t v)
+        {
+            if (mode.kind == BenchMode::Kind::Exact)
+                replay->setCurrentView(v);
+        };
+        const PassResult pass =
+            renderModePass(mode.name, viewer, views, emittedObjects, model.objects.size(), pointReplay);
+        if (!pictured.empty())
+            frames[mode.name] =
+                captureModeFrames(viewer, views, pictured, emittedObjects, model.objects.size(), pointReplay);
         viewer.setSceneData(nullptr);
         if (pass.unmatchedLeaves != 0)
             std::cerr << "osgvisbench: warning: " << mode.name << ": " << pass.unmatchedLeaves
@@ -89,6 +100,16 @@ void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core
                   << replay->mismatchedQueries() << " queries; those views drew everything" << std::endl;
     relateToBaselines(report.modes);
     report.views = views.size();
+    const ModeResult* best = bestCullingMode(report.modes);
+    const ModeResult* baseline = baselineMode(report.modes);
+    if (!pictured.empty() && best && baseline && best != baseline)
+    {
+        report.pictures = writeSideBySide(options.reportDir, frames[baseline->mode.name], frames[best->mode.name],
+                                          model, views, pictured);
+        report.pictureViews = pictured;
+        report.pictureBaseline = baseline->mode.name;
+        report.pictureMode = best->mode.name;
+    }
     if (options.threadingTable())
         report.threading = runThreadingTable(options, modes, scene, walk, views, reference, mainPasses);
 }
@@ -96,6 +117,14 @@ void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core
 
 BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& modes)
 {
+    if (!options.reportDir.empty())
+    {
+        std::error_code error;
+        std::filesystem::create_directories(options.reportDir, error);
+        if (!std::filesystem::is_directory(options.reportDir))
+            throw std::runtime_error("cannot create the report folder '" + options.reportDir + "'" +
+                                     (error ? ": " + error.message() : std::string()));
+    }
     const apps::LoadedScene scene = loadBenchScene(options);
     core::Walk walk = subsampledWalk(scene.walk, options.views);
     if (options.cube)

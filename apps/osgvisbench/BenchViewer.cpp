@@ -19,15 +19,22 @@ namespace
 {
 // note: a final-draw callback, not a post-draw one: in OSG 3.6.5 a camera with a post-draw callback
 // makes every osg::OcclusionQueryNode silently skip its queries, which would falsify `osg-oq`.
+// It reads the frame back when the capture is armed (pictures), then waits for the GPU.
 struct FinishFrame : osg::Camera::DrawCallback
 {
-    void operator()(osg::RenderInfo&) const override { glFinish(); }
+    explicit FinishFrame(apps::FrameCapture* capture) : capture(capture) {}
+    void operator()(osg::RenderInfo& renderInfo) const override
+    {
+        (*capture)(renderInfo);
+        glFinish();
+    }
+    osg::ref_ptr<apps::FrameCapture> capture;
 };
 } // namespace
 
 BenchViewer::BenchViewer(unsigned width, unsigned height, const core::WalkProjection& projection, osg::Node& model,
                          osgViewer::ViewerBase::ThreadingModel threading)
-    : _viewer(new osgViewer::Viewer)
+    : _viewer(new osgViewer::Viewer), _capture(new apps::FrameCapture)
 {
     _viewer->setThreadingModel(threading);
     _viewer->setKeyEventSetsDone(0);
@@ -42,7 +49,7 @@ BenchViewer::BenchViewer(unsigned width, unsigned height, const core::WalkProjec
     camera->setReadBuffer(GL_FRONT);
     camera->setProjectionResizePolicy(osg::Camera::FIXED);
     apps::applyWalkProjection(*camera, projection, double(width) / double(height));
-    camera->setFinalDrawCallback(new FinishFrame);
+    camera->setFinalDrawCallback(new FinishFrame(_capture.get()));
     camera->getStats()->collectStats("rendering", true);
 
     _viewer->setRealizeOperation(new osgUtil::GLObjectsOperation(&model));
@@ -86,6 +93,16 @@ BenchViewer::FrameTiming BenchViewer::renderFrame(const BenchView& view)
                         ? cullSeconds * 1000.0
                         : std::numeric_limits<double>::quiet_NaN();
     return timing;
+}
+
+osg::ref_ptr<osg::Image> BenchViewer::renderAndCapture(const BenchView& view)
+{
+    _capture->arm();
+    renderFrame(view);
+    osg::ref_ptr<osg::Image> image = _capture->take();
+    if (!image)
+        throw ViewerError("the frame drawn for a picture could not be read back");
+    return image;
 }
 
 const osgUtil::RenderStage& BenchViewer::lastRenderStage() const

@@ -7,6 +7,8 @@
 // after frame() under every model: OSG returns only once the frame's cull is done.
 #include "BenchView.h"
 
+#include <FrameCapture.h>
+
 #include <osgVis/core/scene/Walk.h>
 
 #include <osgUtil/RenderStage>
@@ -38,6 +40,8 @@ public:
         double cullMs = 0.0;  // OSG's "Cull traversal time taken" of this frame; NaN if OSG gave none
     };
     FrameTiming renderFrame(const BenchView& view);
+    // Renders the view once and returns its pixels (RGB, bottom row first), for pictures: not timed.
+    osg::ref_ptr<osg::Image> renderAndCapture(const BenchView& view);
 
     // The main render stage of the frame just culled (its bins still hold the frame's leaves; with a
     // draw thread, it may be drawing them meanwhile, which only reads them).
@@ -45,5 +49,6 @@ public:
 
 private:
     osg::ref_ptr<osgViewer::Viewer> _viewer;
+    osg::ref_ptr<apps::FrameCapture> _capture;
 };
 } // namespace osgVis::bench

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace osgVis::bench
 {
@@ -134,5 +135,49 @@ void relateToBaselines(std::vector<ModeResult>& results)
         result.metrics.speedupVsOsg = ratio(*result.metrics.fps, osgFps);
         result.metrics.fpsVsExact = ratio(*result.metrics.fps, exactFps);
     }
+}
+
+const ModeResult* bestCullingMode(const std::vector<ModeResult>& modes)
+{
+    const ModeResult* best = nullptr;
+    for (const ModeResult& result : modes)
+        if (result.mode.kind == BenchMode::Kind::ModuleChain && result.mode.conservative &&
+            result.metrics.falseInvisible == 0 && result.metrics.fps &&
+            (!best || *result.metrics.fps > *best->metrics.fps))
+            best = &result;
+    return best;
+}
+
+const ModeResult* baselineMode(const std::vector<ModeResult>& modes)
+{
+    const ModeResult* osg = findKind(modes, BenchMode::Kind::OsgDefault);
+    return osg ? osg : (modes.empty() ? nullptr : &modes.front());
+}
+
+std::string bestModeSummary(const BenchReport& report)
+{
+    const ModeResult* best = bestCullingMode(report.modes);
+    const ModeResult* base = baselineMode(report.modes);
+    if (!best || !base || best == base)
+        return {};
+    const ModeMetrics &b = best->metrics, &o = base->metrics;
+    const auto ratioText = [](const std::optional<double>& numerator, const std::optional<double>& denominator)
+    {
+        const std::optional<double> r =
+            numerator && denominator ? ratio(*numerator, *denominator) : std::optional<double>();
+        char text[32];
+        std::snprintf(text, sizeof text, r ? "%.2fx" : "-", r.value_or(0.0));
+        return std::string(text);
+    };
+    const auto ms = [](const std::optional<double>& value)
+    {
+        char text[32];
+        std::snprintf(text, sizeof text, value ? "%.2f ms" : "- ms", value.value_or(0.0));
+        return std::string(text);
+    };
+    return "best mode: " + best->mode.name + " vs " + base->mode.name + ": " + ratioText(b.fps, o.fps) +
+           " the frame rate (frame time " + ratioText(o.fps, b.fps) + "), " + ratioText(b.drawnFraction, o.drawnFraction) +
+           " the drawn triangles, cull " + ms(b.cullMsMedian) + " median (" + base->mode.name + " " + ms(o.cullMsMedian) +
+           "), " + std::to_string(b.falseInvisible) + " false-invisible against the oracle";
 }
 } // namespace osgVis::bench

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ReportTable.h"
 
+#include "Metrics.h"
 #include "MisdrawnPixels.h"
 
 #include <algorithm>
@@ -184,6 +185,8 @@ void writeReportTable(std::ostream& out, const BenchReport& report)
         << report.viewsWithSupersampleExtras.size() << " views)\n\n";
     if (!report.modes.empty())
         writeModeTable(out, report);
+    if (const std::string best = bestModeSummary(report); !best.empty())
+        out << "\n" << best << "\n";
     if (std::any_of(report.modes.begin(), report.modes.end(),
                     [](const ModeResult& result) { return result.metrics.misdrawn.has_value(); }))
         writeMisdrawnTable(out, report);

@@ -7,6 +7,7 @@
 #include "BenchOptions.h"
 #include "BenchRun.h"
 #include "DynamicBench.h"
+#include "ReportHtml.h"
 #include "ReportJson.h"
 #include "ReportTable.h"
 
@@ -15,6 +16,7 @@
 #include <PluginPaths.h>
 
 #include <exception>
+#include <filesystem>
 #include <iostream>
 
 using namespace osgVis::bench;
@@ -103,6 +105,16 @@ int main(int argc, char** argv)
         writeReportTable(std::cout, report);
         if (!options.jsonFile.empty())
             saveReportJson(options.jsonFile, report);
+        if (!options.reportDir.empty())
+        {
+            std::cout << "report: " << saveReportHtml(options.reportDir, report);
+            for (const std::string& picture : report.pictures)
+                std::cout << (&picture == &report.pictures.front() ? "\npictures (" + report.pictureBaseline + " | " +
+                                                                         report.pictureMode + " | map): "
+                                                                   : " ")
+                          << (std::filesystem::path(options.reportDir) / picture).string();
+            std::cout << std::endl;
+        }
         const int failures =
             reportFalseInvisible(report) + reportNondeterminism(report) + reportThreadingFailures(report);
         return failures == 0 ? 0 : 1;
