@@ -11,6 +11,7 @@
 #include <osgVis/Statistics>
 
 #include <osgGA/StateSetManipulator>
+#include <osgText/Text>
 #include <osgViewer/Viewer>
 #include <osgViewer/ViewerEventHandlers>
 
@@ -21,13 +22,43 @@ namespace osgVis::viewer
 {
 namespace
 {
+// The keys that matter, named in the window itself (a newcomer should not need --help to find the
+// map and the statistics), with the current mode.
+std::string keyHints(const std::string& mode)
+{
+    return "mode " + mode + " | m: next mode  t: map  i: stats  p: play walk  h: help";
+}
+
+osg::ref_ptr<osg::Camera> createKeyHintsOverlay(unsigned width, unsigned height, osg::ref_ptr<osgText::Text>& text)
+{
+    osg::ref_ptr<osg::Camera> hud = new osg::Camera;
+    hud->setReferenceFrame(osg::Transform::ABSOLUTE_RF);
+    hud->setProjectionMatrixAsOrtho2D(0, width, 0, height);
+    hud->setViewMatrix(osg::Matrix::identity());
+    hud->setClearMask(GL_DEPTH_BUFFER_BIT);
+    hud->setRenderOrder(osg::Camera::POST_RENDER);
+    hud->setAllowEventFocus(false);
+    text = new osgText::Text;
+    text->setDataVariance(osg::Object::DYNAMIC); // changed by the m key while a draw thread may draw it
+    text->setCharacterSize(14.0f);
+    text->setPosition(osg::Vec3(10.0f, 10.0f, 0.0f));
+    text->setColor(osg::Vec4(1.0f, 1.0f, 0.6f, 1.0f));
+    text->setBackdropType(osgText::Text::OUTLINE);
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(text.get());
+    geode->getOrCreateStateSet()->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
+    hud->addChild(geode.get());
+    return hud;
+}
+
 // Keys of the viewer itself: `m` cycles the culling mode, `t` shows or hides the debug map, `b`
 // drops a building ahead, `B` or Delete deletes the building nearest the centre of the view.
 class ViewerKeys : public osgGA::GUIEventHandler
 {
 public:
-    ViewerKeys(CullingModes& modes, DebugMap& map, BuildingTool& buildings, const osg::Camera& camera)
-        : _modes(modes), _map(map), _buildings(buildings), _camera(camera)
+    ViewerKeys(CullingModes& modes, DebugMap& map, BuildingTool& buildings, const osg::Camera& camera,
+               osgText::Text* hints)
+        : _modes(modes), _map(map), _buildings(buildings), _camera(camera), _hints(hints)
     {
     }
 
@@ -39,6 +70,7 @@ public:
         {
             const std::string next = _modes.nextMode();
             _modes.requestMode(next);
+            _hints->setText(keyHints(next));
             std::cout << "osgvisviewer: mode " << next << std::endl;
             return true;
         }
@@ -76,6 +108,7 @@ private:
     DebugMap& _map;
     BuildingTool& _buildings;
     const osg::Camera& _camera;
+    osg::ref_ptr<osgText::Text> _hints;
 };
 
 // Walking speed: crossing the scene takes about twenty seconds.
@@ -102,6 +135,9 @@ int runInteractive(const apps::LoadedScene& scene, const ViewerOptions& options)
     osgViewer::Viewer viewer;
     if (!options.threading.empty())
         viewer.setThreadingModel(apps::parseThreadingModel(options.threading));
+    osg::ref_ptr<osgText::Text> hints;
+    root->addChild(createKeyHintsOverlay(scene.walk.width, scene.walk.height, hints));
+    hints->setText(keyHints(options.mode));
     viewer.setSceneData(root.get());
     viewer.setUpViewInWindow(50, 50, int(scene.walk.width), int(scene.walk.height));
     osg::Camera* camera = viewer.getCamera();
@@ -118,7 +154,7 @@ int runInteractive(const apps::LoadedScene& scene, const ViewerOptions& options)
                                if (VisibilityGroup* group = modes.visibilityGroup())
                                    group->dirtyScene();
                            });
-    viewer.addEventHandler(new ViewerKeys(modes, map, buildings, *camera));
+    viewer.addEventHandler(new ViewerKeys(modes, map, buildings, *camera, hints.get()));
 
     // OSG's usual handlers, with keys moved off w/s/e (walking) and m/t (mode, map).
     osg::ref_ptr<osgViewer::StatsHandler> stats = new osgViewer::StatsHandler;
