@@ -32,7 +32,7 @@ std::vector<FloorPoint> sampleFloor(const RayScene& rays, unsigned count, std::m
         const core::Triangle& t = triangles[i];
         const core::Vec3 n = glm::cross(core::Vec3(t.b - t.a), core::Vec3(t.c - t.a));
         const double area2 = glm::length(n);
-        if (!(area2 > 0.0) || !std::isfinite(area2) || n.z < WalkableCos * area2)
+        if (!rays.usable(i) || !(area2 > 0.0) || !std::isfinite(area2) || n.z < WalkableCos * area2)
             continue;
         total += area2;
         cumulative.push_back(total);
@@ -71,12 +71,12 @@ double chooseEyeHeight(const std::vector<FloorPoint>& floor, double horizontalSi
     std::ostringstream rule;
     if (ceilings.size() * 4 >= floor.size() && !ceilings.empty())
     {
-        std::nth_element(ceilings.begin(), ceilings.begin() + ceilings.size() / 4, ceilings.end());
-        const double quartile = ceilings[ceilings.size() / 4];
-        rule << "0.6 x the 25th percentile of " << ceilings.size() << " ceiling clearances (" << quartile << ")";
+        std::nth_element(ceilings.begin(), ceilings.begin() + ceilings.size() / 2, ceilings.end());
+        const double median = ceilings[ceilings.size() / 2];
+        rule << "0.55 x the median of " << ceilings.size() << " ceiling clearances (" << median << ")";
         report.eyeHeightRule = rule.str();
         indoors = true;
-        return 0.6 * quartile;
+        return 0.55 * median;
     }
     if (1.7 <= 0.1 * horizontalSize)
     {
@@ -169,7 +169,7 @@ core::Walk makeFreeSpaceWalk(const RayScene& rays, const FreeSpaceWalkOptions& o
     FreeSpaceWalkReport local;
     FreeSpaceWalkReport& r = report ? *report : local;
     r = FreeSpaceWalkReport{};
-    const core::Aabb bounds = rays.scene().bounds();
+    const core::Aabb bounds = rays.bounds();
     if (bounds.empty())
         throw FreeSpaceWalkError("the model has no finite bounds");
     const core::Vec3 extent = bounds.extent();
@@ -198,9 +198,13 @@ core::Walk makeFreeSpaceWalk(const RayScene& rays, const FreeSpaceWalkOptions& o
             continue;
         }
         const core::Vec3 eye = f.point + core::Vec3(0, 0, r.eyeHeight);
-        if (insideSolid(rays, eye))
+        // note: an eye is taken only when it is clearly outside (at most a quarter of the rays meet a
+        // back face), so that another sampling of directions cannot find it inside: levels have
+        // open edges and missing faces (a BSP compiler drops the faces nobody can see).
+        const double back = backFaceFraction(rays, eye);
+        if (back > 0.25)
         {
-            ++r.insideSolid;
+            ++(back > 0.5 ? r.insideSolid : r.doubtful);
             continue;
         }
         const std::vector<double> around = freeDistances(rays, eye);

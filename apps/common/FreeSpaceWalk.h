@@ -6,13 +6,14 @@
 //  1. Candidate floor points: random points on upward-facing triangles (normal within 35 degrees
 //     of +z), area-weighted, seeded.
 //  2. Eye height from the model's own scale: where a candidate has a ceiling (the ray up meets
-//     something), 0.6 × the 25th percentile of those clearances (a 3 m room gives 1.8); with
+//     something), 0.55 × the median of those clearances (a 3 m room gives 1.65); with
 //     ceilings above fewer than a quarter of the candidates, 1.7 units (metres, as glTF's unit)
 //     unless that is more than a tenth of the model's horizontal size.
 //  3. A candidate becomes an eye 1 eye height above its floor point if the ceiling is at least
 //     1.25 eye heights up (and there is a ceiling at all, in a model whose eye height came from its
-//     ceilings: an indoor model is walked indoors, not on its roof), the eye is not inside solid geometry (insideSolid: more than half of 64
-//     rays first meet a back face) and no wall is nearer than a quarter eye height in any of 16
+//     ceilings: an indoor model is walked indoors, not on its roof), the eye is clearly outside solid
+//     geometry (at most a quarter of 64 rays first meet a back face, RayHit::backFace; insideSolid,
+//     more than half, is the definition) and no wall is nearer than a quarter eye height in any of 16
 //     horizontal directions.
 //  4. Stations spread by farthest-point sampling over the eyes, visited in nearest-neighbour order;
 //     each gives up to `gazesPerStation` keys looking along the horizontal directions (of 16) that
@@ -46,6 +47,7 @@ struct FreeSpaceWalkReport
     unsigned lowCeiling = 0;        // rejected: less than 1.25 eye heights of room above
     unsigned openSky = 0;           // rejected: nothing above, in a model walked indoors
     unsigned insideSolid = 0;       // rejected: eye inside solid geometry
+    unsigned doubtful = 0;          // rejected: a quarter to a half of the rays meet a back face
     unsigned nearWall = 0;          // rejected: a wall nearer than a quarter eye height
     unsigned eyes = 0;              // accepted
     unsigned stations = 0;          // eyes the walk visits

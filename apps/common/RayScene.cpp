@@ -8,6 +8,27 @@
 
 namespace osgVis::apps
 {
+namespace
+{
+// Hits near one distance, gathered by a filter that rejects every hit so traversal goes on.
+struct GatherContext
+{
+    RTCIntersectContext context; // note: first member, so Embree's context pointer is ours
+    const core::Scene* scene = nullptr;
+    core::Vec3 direction;
+    bool front = false, back = false;
+};
+
+void gatherFacings(const RTCFilterFunctionNArguments* args)
+{
+    auto* gather = reinterpret_cast<GatherContext*>(args->context);
+    const core::Triangle& t = gather->scene->triangles[RTCHitN_primID(args->hit, args->N, 0)];
+    const core::Vec3 normal = glm::cross(core::Vec3(t.b - t.a), core::Vec3(t.c - t.a));
+    (glm::dot(normal, gather->direction) > 0.0 ? gather->back : gather->front) = true;
+    args->valid[0] = 0;
+}
+} // namespace
+
 struct RayScene::Embree
 {
     RTCDevice device = nullptr;
@@ -40,20 +61,30 @@ RayScene::RayScene(const core::Scene& scene) : _scene(scene), _embree(std::make_
         rtcReleaseGeometry(geometry);
         throw std::runtime_error("Embree could not allocate the triangle buffers");
     }
+    _usable.assign(count, false);
     for (std::size_t i = 0; i < count; ++i)
     {
         const core::Triangle& t = scene.triangles[i];
         const core::Vec3f corners[3] = {t.a, t.b, t.c};
+        bool sane = true;
         for (int k = 0; k < 3; ++k)
             for (int axis = 0; axis < 3; ++axis)
-                vertices[9 * i + 3 * k + axis] = std::isfinite(corners[k][axis]) ? corners[k][axis] : 0.0f;
+                sane = sane && std::isfinite(corners[k][axis]) && std::abs(corners[k][axis]) <= 1e12f;
+        _usable[i] = sane;
+        for (int k = 0; k < 3; ++k)
+        {
+            for (int axis = 0; axis < 3; ++axis)
+                vertices[9 * i + 3 * k + axis] = sane ? corners[k][axis] : 0.0f; // a point: never hit
+            if (sane)
+                _bounds.expand(core::Vec3(corners[k]));
+        }
         for (int k = 0; k < 3; ++k)
             indices[3 * i + k] = unsigned(3 * i + k);
     }
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(_embree->scene, geometry);
     rtcReleaseGeometry(geometry);
-    rtcSetSceneFlags(_embree->scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(_embree->scene, RTCSceneFlags(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION));
     rtcCommitScene(_embree->scene);
 }
 
@@ -81,10 +112,23 @@ RayHit RayScene::nearest(const core::Vec3& origin, const core::Vec3& direction, 
         return result;
     result.distance = query.ray.tfar;
     result.triangle = query.hit.primID;
-    // note: our own counter-clockwise normal, not Embree's Ng (whose sign follows its own convention).
+    // Every triangle within a hair of the nearest distance, facing judged by our own counter-clockwise
+    // normal (not Embree's Ng, whose sign follows its own convention).
+    GatherContext gather;
+    rtcInitIntersectContext(&gather.context);
+    gather.context.filter = gatherFacings;
+    gather.scene = &_scene;
+    gather.direction = unit;
+    const float hair = 1e-5f * std::max(1.0f, query.ray.tfar);
+    RTCRayHit window = query;
+    window.ray.tnear = std::max(0.0f, query.ray.tfar - hair);
+    window.ray.tfar = query.ray.tfar + hair;
+    window.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(_embree->scene, &gather.context, &window);
     const core::Triangle& t = _scene.triangles[result.triangle];
     const core::Vec3 normal = glm::cross(core::Vec3(t.b - t.a), core::Vec3(t.c - t.a));
-    result.backFace = glm::dot(normal, unit) > 0.0;
+    (glm::dot(normal, unit) > 0.0 ? gather.back : gather.front) = true; // the nearest one, whatever the window found
+    result.backFace = gather.back && !gather.front;
     return result;
 }
 
@@ -103,7 +147,7 @@ std::vector<core::Vec3> sphereDirections(unsigned count)
     return directions;
 }
 
-bool insideSolid(const RayScene& rays, const core::Vec3& eye, unsigned rayCount)
+double backFaceFraction(const RayScene& rays, const core::Vec3& eye, unsigned rayCount)
 {
     unsigned back = 0;
     for (const core::Vec3& direction : sphereDirections(rayCount))
@@ -111,6 +155,11 @@ bool insideSolid(const RayScene& rays, const core::Vec3& eye, unsigned rayCount)
         const RayHit hit = rays.nearest(eye, direction);
         back += hit.hit() && hit.backFace;
     }
-    return 2 * back > rayCount;
+    return rayCount ? double(back) / double(rayCount) : 0.0;
+}
+
+bool insideSolid(const RayScene& rays, const core::Vec3& eye, unsigned rayCount)
+{
+    return backFaceFraction(rays, eye, rayCount) > 0.5;
 }
 } // namespace osgVis::apps

@@ -189,8 +189,9 @@ core::Walk freeSpaceWalk(LoadedScene& scene, bool orbitIfNone)
         std::ostringstream source;
         source << "automatic walk (" << report.stations << " eyes of " << report.eyes << " found from "
                << report.candidates << " floor points; eye height " << report.eyeHeight << ": " << report.eyeHeightRule
-               << "; rejected " << report.openSky << " under open sky, " << report.nearWall << " next to a wall, " << report.lowCeiling << " under low ceilings, " << report.insideSolid
-               << " inside solid geometry)";
+               << "; rejected " << report.openSky << " under open sky, " << report.lowCeiling << " under low ceilings, "
+               << report.nearWall << " next to a wall, " << report.insideSolid << " inside solid geometry, "
+               << report.doubtful << " near it)";
         scene.walkSource = source.str();
         return walk;
     }
