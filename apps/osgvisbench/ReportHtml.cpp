@@ -51,6 +51,29 @@ std::string colourOf(const BenchMode& mode, std::size_t index)
     return palette[index % (sizeof palette / sizeof *palette)];
 }
 
+// The smallest 1, 2 or 5 × 10^k at or above `value`: a plot's top that ticks read well at.
+double niceCeiling(double value)
+{
+    const double magnitude = std::pow(10.0, std::floor(std::log10(value)));
+    for (const double step : {1.0, 2.0, 2.5, 5.0, 10.0})
+        if (step * magnitude >= value)
+            return step * magnitude;
+    return 10.0 * magnitude;
+}
+
+// 120000 as "120k", 2500000 as "2.5M", small values as they are.
+std::string tickText(double value)
+{
+    char text[32];
+    if (value >= 1e6)
+        std::snprintf(text, sizeof text, "%gM", value / 1e6);
+    else if (value >= 1e4)
+        std::snprintf(text, sizeof text, "%gk", value / 1e3);
+    else
+        std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
 struct Series
 {
     std::string name, colour;
@@ -74,7 +97,7 @@ void writePlot(std::ostream& out, const std::string& title, const std::string& y
     }
     if (views == 0)
         return;
-    maxValue = maxValue > 0.0 ? maxValue * 1.05 : 1.0;
+    maxValue = maxValue > 0.0 ? niceCeiling(maxValue) : 1.0;
     const double plotW = width - left - right, plotH = height - top - bottom;
     const auto x = [&](std::size_t v) { return left + (views > 1 ? plotW * double(v) / double(views - 1) : 0.0); };
     const auto y = [&](double value) { return top + plotH * (1.0 - value / maxValue); };
@@ -88,8 +111,8 @@ void writePlot(std::ostream& out, const std::string& title, const std::string& y
         const double value = maxValue * tick / 4.0;
         std::snprintf(buffer, sizeof buffer,
                       "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#e4e4e4\"/>"
-                      "<text x=\"%.1f\" y=\"%.1f\" class=\"tick\" text-anchor=\"end\">%.4g</text>\n",
-                      left, y(value), left + plotW, y(value), left - 6, y(value) + 4, value);
+                      "<text x=\"%.1f\" y=\"%.1f\" class=\"tick\" text-anchor=\"end\">%s</text>\n",
+                      left, y(value), left + plotW, y(value), left - 6, y(value) + 4, tickText(value).c_str());
         out << buffer;
     }
     std::snprintf(buffer, sizeof buffer,
