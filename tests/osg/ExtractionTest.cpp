@@ -168,6 +168,42 @@ TEST(Extraction, NonFiniteVertexIsAlwaysVisibleNeverACrash)
             EXPECT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
 }
 
+// Two faces sharing one vertex array of a whole "level" (as OSG's bsp plugin builds Quake 3 maps):
+// each object's bounds are those of the vertices its primitives draw, not of the array.
+//
+//   y  3 +-------+               vertex array: 0..3 the left quad, 4..7 the right one,
+//        | left  |    +-------+  8 a far-away vertex no primitive uses
+//      0 +-------+    | right |
+//        0       2    5       8 x
+TEST(Extraction, SharedVertexArrayBoundsFollowTheDrawnVertices)
+{
+    osg::ref_ptr<osg::Vec3Array> level = new osg::Vec3Array;
+    for (const osg::Vec3& v : {osg::Vec3(0, 0, 0), osg::Vec3(2, 0, 0), osg::Vec3(2, 3, 0), osg::Vec3(0, 3, 0),
+                               osg::Vec3(5, -1, 1), osg::Vec3(8, -1, 1), osg::Vec3(8, 2, 1), osg::Vec3(5, 2, 1),
+                               osg::Vec3(1000, 1000, 1000)})
+        level->push_back(v);
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    osg::ref_ptr<osg::Geometry> left = new osg::Geometry, right = new osg::Geometry, none = new osg::Geometry;
+    for (osg::Geometry* g : {left.get(), right.get(), none.get()})
+    {
+        g->setVertexArray(level.get());
+        geode->addDrawable(g);
+    }
+    const GLushort leftIndices[] = {0, 1, 2, 0, 2, 3};
+    left->addPrimitiveSet(new osg::DrawElementsUShort(GL_TRIANGLES, 6, leftIndices));
+    right->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 4, 4));
+    // no primitive set: draws nothing; its bounds fall back to the whole array (never too small)
+
+    const auto extracted = osgVis::extractScene(*geode);
+    ASSERT_EQ(extracted->scene.objects.size(), 3u);
+    expectBounds(extracted->scene.objects[0].bounds, osg::Vec3d(0, 0, 0), osg::Vec3d(2, 3, 0));
+    expectBounds(extracted->scene.objects[1].bounds, osg::Vec3d(5, -1, 1), osg::Vec3d(8, 2, 1));
+    expectBounds(extracted->scene.objects[2].bounds, osg::Vec3d(0, -1, 0), osg::Vec3d(1000, 1000, 1000));
+    EXPECT_EQ(extracted->scene.objects[0].triangleCount, 2u);
+    EXPECT_EQ(extracted->scene.objects[1].triangleCount, 2u);
+    EXPECT_EQ(extracted->scene.objects[2].triangleCount, 0u);
+}
+
 TEST(Extraction, BlendingMarksTransparent)
 {
     osg::ref_ptr<osg::Group> root = new osg::Group;

@@ -18,6 +18,7 @@
 #include <osg/NodeVisitor>
 #include <osg/Notify>
 #include <osg/PositionAttitudeTransform>
+#include <osg/PrimitiveSet>
 #include <osg/Projection>
 #include <osg/TriangleFunctor>
 
@@ -102,11 +103,50 @@ struct BoundsAccumulator
     }
 };
 
-// Feeds every vertex of a vertex array to a BoundsAccumulator; `handled` stays false for array types
-// that hold no positions we understand.
+// The vertices a geometry's primitive sets draw. Real files often share one vertex array between
+// many drawables (OSG's bsp plugin gives every face of a Quake 3 level the whole level's vertices):
+// the bounds of what a drawable draws are those of the vertices its primitives use, not of its array.
+class ReferencedVertices : public osg::PrimitiveIndexFunctor
+{
+public:
+    std::vector<bool> used;
+    bool any = false;
+
+    void setVertexArray(unsigned int count, const osg::Vec2*) override { used.assign(count, false); }
+    void setVertexArray(unsigned int count, const osg::Vec3*) override { used.assign(count, false); }
+    void setVertexArray(unsigned int count, const osg::Vec4*) override { used.assign(count, false); }
+    void setVertexArray(unsigned int count, const osg::Vec2d*) override { used.assign(count, false); }
+    void setVertexArray(unsigned int count, const osg::Vec3d*) override { used.assign(count, false); }
+    void setVertexArray(unsigned int count, const osg::Vec4d*) override { used.assign(count, false); }
+    void drawArrays(GLenum, GLint first, GLsizei count) override
+    {
+        for (GLsizei i = 0; i < count; ++i)
+            mark(unsigned(first + i));
+    }
+    void drawElements(GLenum, GLsizei count, const GLubyte* indices) override { markAll(count, indices); }
+    void drawElements(GLenum, GLsizei count, const GLushort* indices) override { markAll(count, indices); }
+    void drawElements(GLenum, GLsizei count, const GLuint* indices) override { markAll(count, indices); }
+
+private:
+    // note: an index past the array draws nothing we can bound (OSG would read out of range); the
+    // caller falls back to the whole array when no index was usable.
+    void mark(unsigned index)
+    {
+        if (index < used.size())
+            used[index] = true, any = true;
+    }
+    template <class Index> void markAll(GLsizei count, const Index* indices)
+    {
+        for (GLsizei i = 0; i < count; ++i)
+            mark(unsigned(indices[i]));
+    }
+};
+
+// Feeds the vertices of a vertex array to a BoundsAccumulator (all of them, or those `used` marks);
+// `handled` stays false for array types that hold no positions we understand.
 struct VertexBoundsVisitor : public osg::ConstArrayVisitor
 {
-    explicit VertexBoundsVisitor(BoundsAccumulator& out) : _out(out) {}
+    VertexBoundsVisitor(BoundsAccumulator& out, const std::vector<bool>* used) : _out(out), _used(used) {}
 
     void apply(const osg::Vec2Array& a) override
     {
@@ -139,11 +179,13 @@ private:
     template <class ArrayT, class F> void each(const ArrayT& array, F f)
     {
         handled = true;
-        for (const auto& v : array)
-            f(v);
+        for (std::size_t i = 0; i < array.size(); ++i)
+            if (!_used || (i < _used->size() && (*_used)[i]))
+                f(array[i]);
     }
 
     BoundsAccumulator& _out;
+    const std::vector<bool>* _used;
 };
 
 // Counts a drawable's triangles and optionally keeps them in world space.
@@ -310,7 +352,9 @@ private:
         bool fromVertices = false;
         if (geometry && geometry->getVertexArray())
         {
-            VertexBoundsVisitor visitor(bounds);
+            ReferencedVertices referenced;
+            geometry->accept(referenced);
+            VertexBoundsVisitor visitor(bounds, referenced.any ? &referenced.used : nullptr);
             geometry->getVertexArray()->accept(visitor);
             fromVertices = visitor.handled;
         }
@@ -401,6 +445,11 @@ private:
     std::vector<std::pair<osg::ref_ptr<const Portal>, osg::Matrixd>> _portals;
 };
 } // namespace
+
+const char* whyNotAutomaticOccluder(const osg::NodePath& path)
+{
+    return occluderEligibility(path).notOccluderBecause;
+}
 
 osg::ref_ptr<ExtractedScene> extractScene(osg::Node& root, const ExtractionOptions& options)
 {
