@@ -99,7 +99,7 @@ std::string benchUsage()
            "                   [--mask-slowdown K] [--cull-only]\n"
            "                   [--dynamic] [--threading MODEL,...] [--async on|off|on,off]\n"
            "                   [--async-lookahead N]\n"
-           "                   [--json OUT.json] [--report DIR [--pictures N]] [--help]\n"
+           "                   [--json OUT.json] [--report DIR [--pictures N]] [--explain] [--help]\n"
            "\n"
            "Renders every mode over the same walk in one process and measures it against the\n"
            "exact-visibility oracle (docs/benchmark.md). A module chain is written with '+'.\n"
@@ -147,6 +147,11 @@ std::string benchUsage()
            "  walk: osg's frame | the best mode's frame | a top-down map of what the best mode drew\n"
            "  (green), culled in the frustum (red), left outside it (grey), and the frustum (yellow).\n"
            "  The best mode is the conservative module chain with the highest fps.\n"
+           "--explain: also say why culling does or does not work on the model: the objects that\n"
+           "  are no occluder, by reason (transparent, alpha test, polygon mode, no depth write, under\n"
+           "  LOD/Switch, dynamic, degenerate, too small, ...), the occluder polygons the object-space\n"
+           "  methods get, objects whose bounds span more than half the model, and the objects the\n"
+           "  best mode never culled although hidden, largest first, with the likeliest reason.\n"
            "Every rendered mode also gets its mis-drawn pixels: pixels of the oracle's exact image\n"
            "  (display resolution) showing an object the mode culled (where the oracle counts\n"
            "  pixels per object). Approximate modes report false-invisible objects, never fail.\n"
@@ -198,6 +203,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
                 throw UsageError("--pictures must lie between 0 and 1000");
             options.pictures = int(count);
         }
+        else if (flag == "--explain")
+            options.explain = true;
         else if (flag == "--json")
             options.jsonFile = value();
         else if (flag == "--supersample")
@@ -282,6 +289,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
         throw UsageError("--pictures go into the report: give --report DIR too");
     if (!options.reportDir.empty() && (options.cullOnly || options.dynamic))
         throw UsageError("--report draws the rendered walk's plots: not with --cull-only or --dynamic");
+    if (options.explain && (options.cullOnly || options.dynamic))
+        throw UsageError("--explain reads the rendered walk: not with --cull-only or --dynamic");
     if (options.cullOnly && !options.sweeps() && !options.maskSweep())
         throw UsageError("--cull-only needs a sweep: give --speeds, --threads and/or --mask-deltas");
     return options;

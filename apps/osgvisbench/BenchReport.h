@@ -4,6 +4,7 @@
 // metrics table; exact definitions in docs/benchmark.md). Unset optionals are metrics with no
 // meaning in this run (a zero denominator, a baseline mode not run) and print as null.
 #include "BenchMode.h"
+#include "Explain.h"
 
 #include <array>
 #include <cstdint>
@@ -168,6 +169,7 @@ struct BenchReport
     std::vector<std::string> pictures;
     std::vector<std::size_t> pictureViews;
     std::string pictureBaseline, pictureMode;
+    std::optional<Explanation> explanation; // --explain
 };
 
 } // namespace osgVis::bench

@@ -68,6 +68,7 @@ void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core
         options.reportDir.empty() ? std::vector<std::size_t>{}
                                   : pictureViews(views.size(), options.pictures < 0 ? 6u : unsigned(options.pictures));
     std::map<std::string, ModeFrames> frames; // per mode, for the pictures
+    std::map<std::string, std::vector<core::VisibleSet>> drawnByMode; // --explain
     {
     BenchViewer viewer(walk.width, walk.height, walk.projection, *scene.model);
     EmittedObjects emittedObjects(*scene.objects);
@@ -92,6 +93,8 @@ void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core
         report.modes.push_back(measureMode(mode, model, reference, pass));
         if (options.threadingTable())
             mainPasses[mode.name] = pass.emitted;
+        if (options.explain)
+            drawnByMode[mode.name] = pass.emitted;
     }
     }
     if (replay && replay->mismatchedQueries() != 0)
@@ -102,6 +105,29 @@ void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core
     report.views = views.size();
     const ModeResult* best = bestCullingMode(report.modes);
     const ModeResult* baseline = baselineMode(report.modes);
+    if (options.explain)
+    {
+        std::vector<core::VisibleSet> hidden;
+        for (const ViewReference& view : reference.views)
+        {
+            core::VisibleSet set(model.objects.size());
+            for (const core::SceneObject& object : model.objects)
+                if (view.inFrustum.test(object.id) && !view.exact.test(object.id))
+                    set.set(object.id);
+            hidden.push_back(std::move(set));
+        }
+        const osg::ref_ptr<ExtractedScene> withTriangles = extractScene(*scene.model);
+        // The never-culled list is about the mode that culls most behind occluders.
+        const ModeResult* occluding = nullptr;
+        for (const ModeResult& result : report.modes)
+            if (result.mode.kind == BenchMode::Kind::ModuleChain && result.mode.conservative &&
+                result.metrics.occlusionEfficacy.value_or(0.0) > 0.0 &&
+                (!occluding || *result.metrics.occlusionEfficacy > *occluding->metrics.occlusionEfficacy))
+                occluding = &result;
+        const std::string about = occluding ? occluding->mode.name : std::string();
+        report.explanation = explainScene(*withTriangles, about, about.empty() ? std::vector<core::VisibleSet>{}
+                                                                                : drawnByMode[about], hidden);
+    }
     if (!pictured.empty() && best && baseline && best != baseline)
     {
         report.pictures = writeSideBySide(options.reportDir, frames[baseline->mode.name], frames[best->mode.name],

@@ -198,6 +198,8 @@ void writeReportTable(std::ostream& out, const BenchReport& report)
         writeMaskSweepTable(out, report.maskSweep);
     if (!report.threading.empty())
         writeThreadingTable(out, report.threading);
+    if (report.explanation)
+        writeExplanation(out, *report.explanation);
     out.flush();
 }
 } // namespace osgVis::bench

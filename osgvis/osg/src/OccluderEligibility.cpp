@@ -133,12 +133,22 @@ OccluderEligibility occluderEligibility(const osg::NodePath& path)
 
     // note: a shader may discard or move fragments, an alpha test punches holes, clip planes and
     // the stencil cut pixels away: none of them may hide anything on our word.
-    const bool solid = everyFrame && !(state.alphaTest.set && state.alphaTest.value) &&
-                       !(state.stencilTest.set && state.stencilTest.value) && !state.clipPlane.set &&
-                       !(state.depthTest.set && !state.depthTest.value) && fillsBothSides(state.polygonMode.value) &&
-                       writesDepthNormally(state.depth.value) && !state.program.value;
-    if (!solid)
-        out.flags |= core::OBJECT_NO_AUTO_OCCLUDER;
+    const std::pair<bool, const char*> rules[] = {
+        {everyFrame, "under a node that may not draw it every frame (LOD, Switch, a cull or draw callback)"},
+        {!(state.alphaTest.set && state.alphaTest.value), "alpha test"},
+        {!(state.stencilTest.set && state.stencilTest.value), "stencil test"},
+        {!state.clipPlane.set, "clip plane"},
+        {!(state.depthTest.set && !state.depthTest.value), "depth test off"},
+        {fillsBothSides(state.polygonMode.value), "polygon mode lines or points"},
+        {writesDepthNormally(state.depth.value), "no depth write, or a depth range or function that is not the usual"},
+        {!state.program.value, "a shader program (it may discard or move fragments)"}};
+    for (const auto& [holds, why] : rules)
+        if (!holds)
+        {
+            out.flags |= core::OBJECT_NO_AUTO_OCCLUDER;
+            out.notOccluderBecause = why;
+            break;
+        }
 
     if (const auto* front = static_cast<const osg::FrontFace*>(state.frontFace.value))
         out.clockwiseFront = front->getMode() == osg::FrontFace::CLOCKWISE;

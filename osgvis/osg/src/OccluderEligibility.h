@@ -13,6 +13,7 @@ struct OccluderEligibility
 {
     std::uint32_t flags = 0;     // core::OBJECT_NO_AUTO_OCCLUDER, OBJECT_CULL_BACK, OBJECT_CULL_FRONT
     bool clockwiseFront = false; // osg::FrontFace CLOCKWISE: stored triangles must be flipped
+    const char* notOccluderBecause = nullptr; // with OBJECT_NO_AUTO_OCCLUDER: the first reason found
 };
 
 // `path` runs from the extraction root down to and including the drawable.
