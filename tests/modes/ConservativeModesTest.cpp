@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -26,6 +27,7 @@ struct ContractScene
     std::string name;      // test name part
     std::string generate;  // osgvisgen arguments less -o
     std::string benchArgs; // view sampling and size
+    std::string pk3, map;  // or a real Quake 3 level: the map's path inside a Debian-installed .pk3
 };
 
 // Modes the bench runs: OSG's own culling, every non-approximate module alone, and each after
@@ -71,6 +73,11 @@ std::vector<ContractScene> contractScenes()
                               " --seed 2",
                           "--views 24"});
     }
+    // Real levels nobody here made (OpenArena, GPL data, read from Debian's openarena-081-maps where
+    // installed, never shipped), walked from inside by the automatic walk; skipped without the package.
+    for (const char* map : {"oa_dm4", "ce1m7"})
+        scenes.push_back({std::string("openarena_") + map, "", "--views 40 --size 320x256",
+                          "/usr/share/games/openarena/baseoa/pak1-maps.pk3", std::string("maps/") + map + ".bsp"});
     for (std::string name : osgVis::gen::adversarialSceneNames())
     {
         const std::string arguments = "--adversarial " + name;
@@ -96,9 +103,20 @@ TEST_P(ConservativeModes, MissNoVisibleObject)
     ASSERT_TRUE(haveDisplay()) << "needs an X display: run the tests through scripts/test.sh";
     const ContractScene& scene = GetParam();
     const auto dir = scratchDirectory("modes", scene.name);
-    const std::string model = (dir / "scene.osgb").string();
-    const AppRun generated = runApp(OSGVISGEN_EXE, scene.generate + " -o \"" + model + "\"");
-    ASSERT_EQ(generated.exitCode, 0) << generated.output;
+    std::string model = (dir / "scene.osgb").string();
+    if (scene.pk3.empty())
+    {
+        const AppRun generated = runApp(OSGVISGEN_EXE, scene.generate + " -o \"" + model + "\"");
+        ASSERT_EQ(generated.exitCode, 0) << generated.output;
+    }
+    else
+    {
+        if (!std::filesystem::exists(scene.pk3))
+            GTEST_SKIP() << scene.pk3 << " is not installed (Debian package openarena-081-maps)";
+        const AppRun unzip = runApp("unzip", "-o -q '" + scene.pk3 + "' '" + scene.map + "' -d '" + dir.string() + "'");
+        ASSERT_EQ(unzip.exitCode, 0) << "cannot extract " << scene.map << ": " << unzip.output;
+        model = (dir / scene.map).string();
+    }
 
     const std::vector<std::string> modes = conservativeModes();
     ASSERT_GE(modes.size(), 2u) << "the registry lost the frustum module";
