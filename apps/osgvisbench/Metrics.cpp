@@ -178,6 +178,7 @@ std::string bestModeSummary(const BenchReport& report)
     return "best mode: " + best->mode.name + " vs " + base->mode.name + ": " + ratioText(b.fps, o.fps) +
            " the frame rate (frame time " + ratioText(o.fps, b.fps) + "), " + ratioText(b.drawnFraction, o.drawnFraction) +
            " the drawn triangles, cull " + ms(b.cullMsMedian) + " median (" + base->mode.name + " " + ms(o.cullMsMedian) +
-           "), " + std::to_string(b.falseInvisible) + " false-invisible against the oracle";
+           "), " + std::to_string(b.falseInvisible) + " false-invisible against the oracle" +
+           (b.fps && o.fps && *b.fps < *o.fps ? " (no culling mode beat " + base->mode.name + " here)" : "");
 }
 } // namespace osgVis::bench

@@ -2,6 +2,7 @@
 #include "ReportHtml.h"
 
 #include "Metrics.h"
+#include "TextFile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -271,13 +272,7 @@ void writeReportHtml(std::ostream& out, const BenchReport& report)
 std::string saveReportHtml(const std::string& directory, const BenchReport& report)
 {
     const std::string path = (std::filesystem::path(directory) / "index.html").string();
-    std::ofstream file(path);
-    if (!file)
-        throw std::runtime_error("cannot write the report '" + path + "'");
-    writeReportHtml(file, report);
-    file.close();
-    if (!file)
-        throw std::runtime_error("failed writing the report '" + path + "'");
+    writeTextFile(path, "report", [&](std::ostream& out) { writeReportHtml(out, report); });
     return path;
 }
 } // namespace osgVis::bench

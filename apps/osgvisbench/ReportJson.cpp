@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "ReportJson.h"
 
+#include "TextFile.h"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -262,12 +264,6 @@ void writeReportJson(std::ostream& out, const BenchReport& report)
 
 void saveReportJson(const std::string& path, const BenchReport& report)
 {
-    std::ofstream file(path);
-    if (!file)
-        throw std::runtime_error("cannot write JSON report '" + path + "'");
-    writeReportJson(file, report);
-    file.close();
-    if (!file)
-        throw std::runtime_error("failed writing JSON report '" + path + "'");
+    writeTextFile(path, "JSON report", [&](std::ostream& out) { writeReportJson(out, report); });
 }
 } // namespace osgVis::bench

@@ -8,6 +8,8 @@
 #include "DebugMap.h"
 #include "WalkManipulator.h"
 
+#include <OccluderReport.h>
+
 #include <osgVis/Statistics>
 
 #include <osgGA/StateSetManipulator>
@@ -26,7 +28,7 @@ namespace
 // map and the statistics), with the current mode.
 std::string keyHints(const std::string& mode)
 {
-    return "mode " + mode + " | m: next mode  t: map  i: stats  p: play walk  h: help";
+    return "mode " + mode + " | m: next mode  t: map  i: stats  y: why (not) culled  p: play walk  h: help";
 }
 
 osg::ref_ptr<osg::Camera> createKeyHintsOverlay(unsigned width, unsigned height, osg::ref_ptr<osgText::Text>& text)
@@ -57,8 +59,8 @@ class ViewerKeys : public osgGA::GUIEventHandler
 {
 public:
     ViewerKeys(CullingModes& modes, DebugMap& map, BuildingTool& buildings, const osg::Camera& camera,
-               osgText::Text* hints)
-        : _modes(modes), _map(map), _buildings(buildings), _camera(camera), _hints(hints)
+               osgText::Text* hints, osg::Node& model)
+        : _modes(modes), _map(map), _buildings(buildings), _camera(camera), _hints(hints), _model(model)
     {
     }
 
@@ -72,6 +74,15 @@ public:
             _modes.requestMode(next);
             _hints->setText(keyHints(next));
             std::cout << "osgvisviewer: mode " << next << std::endl;
+            return true;
+        }
+        if (ea.getKey() == 'y')
+        {
+            // note: extracted afresh with triangles, so edits made with b/B are included
+            std::cout << "osgvisviewer: explain (why culling does or does not work on this model):\n";
+            apps::writeOccluderReport(std::cout, apps::reportOccluders(*extractScene(_model)));
+            std::cout << "  (osgvisbench --explain also lists the objects a mode never culls although hidden)"
+                      << std::endl;
             return true;
         }
         if (ea.getKey() == 't')
@@ -98,6 +109,7 @@ public:
     void getUsage(osg::ApplicationUsage& usage) const override
     {
         usage.addKeyboardMouseBinding("m", "Next culling mode (osg, then every registered module)");
+        usage.addKeyboardMouseBinding("y", "Why (not): which objects may occlude, and why the others may not");
         usage.addKeyboardMouseBinding("t", "Show / hide the top-down map: drawn green, culled red, outside grey");
         usage.addKeyboardMouseBinding("b", "Drop a building box a few metres ahead");
         usage.addKeyboardMouseBinding("B", "Delete the building nearest the centre of the view (also Delete)");
@@ -109,6 +121,7 @@ private:
     BuildingTool& _buildings;
     const osg::Camera& _camera;
     osg::ref_ptr<osgText::Text> _hints;
+    osg::Node& _model;
 };
 
 // Walking speed: crossing the scene takes about twenty seconds.
@@ -154,7 +167,7 @@ int runInteractive(const apps::LoadedScene& scene, const ViewerOptions& options)
                                if (VisibilityGroup* group = modes.visibilityGroup())
                                    group->dirtyScene();
                            });
-    viewer.addEventHandler(new ViewerKeys(modes, map, buildings, *camera, hints.get()));
+    viewer.addEventHandler(new ViewerKeys(modes, map, buildings, *camera, hints.get(), *scene.model));
 
     // OSG's usual handlers, with keys moved off w/s/e (walking) and m/t (mode, map).
     osg::ref_ptr<osgViewer::StatsHandler> stats = new osgViewer::StatsHandler;
@@ -177,7 +190,7 @@ int runInteractive(const apps::LoadedScene& scene, const ViewerOptions& options)
     viewer.addEventHandler(help.get());
 
     std::cout << "osgvisviewer: " << scene.name << ", walk " << scene.walkSource << ", mode " << options.mode
-              << " (h: help, m: next mode, t: map, p: play walk, b/B: drop/delete a building)" << std::endl;
+              << " (h: help, m: next mode, t: map, y: why (not) culled, p: play walk, b/B: drop/delete a building)" << std::endl;
     return viewer.run();
 }
 } // namespace osgVis::viewer
