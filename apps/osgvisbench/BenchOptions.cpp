@@ -99,7 +99,8 @@ std::string benchUsage()
            "                   [--mask-slowdown K] [--cull-only]\n"
            "                   [--dynamic] [--threading MODEL,...] [--async on|off|on,off]\n"
            "                   [--async-lookahead N]\n"
-           "                   [--json OUT.json] [--report DIR [--pictures N]] [--explain] [--help]\n"
+           "                   [--json OUT.json] [--report DIR [--pictures N]] [--explain] [--backoff on|off]\n"
+           "                   [--help]\n"
            "\n"
            "Renders every mode over the same walk in one process and measures it against the\n"
            "exact-visibility oracle (docs/benchmark.md). A module chain is written with '+'.\n"
@@ -152,6 +153,10 @@ std::string benchUsage()
            "  LOD/Switch, dynamic, degenerate, too small, ...), the occluder polygons the object-space\n"
            "  methods get, objects whose bounds span more than half the model, and the objects the\n"
            "  best mode never culled although hidden, largest first, with the likeliest reason.\n"
+           "--backoff on: measure the modes as an application with do no harm gets them: each\n"
+           "  VisibilityGroup times frames with and without its chain and skips the chain where it\n"
+           "  costs more than it saves (core::BackOff; timing-dependent, so off by default: each\n"
+           "  method is measured alone).\n"
            "Every rendered mode also gets its mis-drawn pixels: pixels of the oracle's exact image\n"
            "  (display resolution) showing an object the mode culled (where the oracle counts\n"
            "  pixels per object). Approximate modes report false-invisible objects, never fail.\n"
@@ -202,6 +207,13 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             if (count > 1000)
                 throw UsageError("--pictures must lie between 0 and 1000");
             options.pictures = int(count);
+        }
+        else if (flag == "--backoff")
+        {
+            const std::string setting = value();
+            if (setting != "on" && setting != "off")
+                throw UsageError("--backoff takes on or off, got '" + setting + "'");
+            options.backOff = setting == "on";
         }
         else if (flag == "--explain")
             options.explain = true;

@@ -34,6 +34,7 @@ struct BenchOptions
     std::string reportDir;            // --report DIR: DIR/index.html (and pictures) for people
     int pictures = -1;                // --pictures N: side-by-side pictures in the report; -1: 6
     bool explain = false;             // --explain: why culling does or does not work on the model
+    bool backOff = false;             // --backoff on: do no harm in every VisibilityGroup (off: each method alone)
     unsigned supersample = 2;         // --supersample K: the oracle's extra check at K× resolution
     bool cube = false;                // --cube (or --fov 360): six cube-face views per walk key
     std::vector<unsigned> speeds;     // --speeds 1,2,4: cull-only sweep over observer speeds

@@ -11,10 +11,12 @@ namespace osgVis::bench
 namespace
 {
 osg::ref_ptr<osg::Node> underVisibilityGroup(osg::Node& model, const std::string& chain, bool async = false,
-                                             unsigned asyncLookAhead = 4)
+                                             unsigned asyncLookAhead = 4, bool backOff = false)
 {
     osg::ref_ptr<VisibilityGroup> group = new VisibilityGroup;
     group->setModes(chain);
+    if (backOff)
+        group->setBackOff(core::BackOffOptions{});
     if (async)
     {
         core::AsyncOptions options;
@@ -27,7 +29,7 @@ osg::ref_ptr<osg::Node> underVisibilityGroup(osg::Node& model, const std::string
 } // namespace
 
 osg::ref_ptr<osg::Node> buildModeGraph(const BenchMode& mode, osg::Node& model, const ExtractedScene& scene, bool async,
-                                       unsigned asyncLookAhead)
+                                       unsigned asyncLookAhead, bool backOff)
 {
     switch (mode.kind)
     {
@@ -40,6 +42,6 @@ osg::ref_ptr<osg::Node> buildModeGraph(const BenchMode& mode, osg::Node& model, 
     case BenchMode::Kind::ModuleChain:
         break;
     }
-    return underVisibilityGroup(model, mode.chain, async, asyncLookAhead);
+    return underVisibilityGroup(model, mode.chain, async, asyncLookAhead, backOff);
 }
 } // namespace osgVis::bench

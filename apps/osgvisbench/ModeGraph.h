@@ -13,7 +13,8 @@ namespace osgVis::bench
 // osg: the model itself. osg-oq: the per-object occlusion-query graph. exact and module chains:
 // the model under an osgVis::VisibilityGroup (exact runs the bench's oracle-replay module, which
 // must be registered first: see ExactReplay).
-// `async` turns on asynchronous visibility for module chains (regions covering `asyncLookAhead` frames).
+// `async` turns on asynchronous visibility for module chains (regions covering `asyncLookAhead` frames),
+// `backOff` do no harm (core::BackOff).
 osg::ref_ptr<osg::Node> buildModeGraph(const BenchMode& mode, osg::Node& model, const ExtractedScene& scene,
-                                       bool async = false, unsigned asyncLookAhead = 4);
+                                       bool async = false, unsigned asyncLookAhead = 4, bool backOff = false);
 } // namespace osgVis::bench

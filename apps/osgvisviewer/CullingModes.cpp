@@ -89,6 +89,8 @@ void CullingModes::apply(const std::string& mode)
                 _group = new VisibilityGroup;
                 _group->setName("osgvisviewer visibility");
                 _group->setAsync(_async);
+                // An application should never run slower for culling: do no harm is on here.
+                _group->setBackOff(core::BackOffOptions{});
                 _group->addChild(_model.get());
             }
             _group->setModes(mode);

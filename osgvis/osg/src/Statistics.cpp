@@ -18,6 +18,8 @@ void write(osg::Stats& stats, unsigned frameNumber, const CullStatistics& figure
     stats.setAttribute(frameNumber, STATS_CULL_MS, figures.cullMs);
     if (figures.async)
         stats.setAttribute(frameNumber, STATS_ASYNC_FALLBACK, figures.asyncFallback ? 1.0 : 0.0);
+    if (figures.backOff)
+        stats.setAttribute(frameNumber, STATS_BACKED_OFF, figures.backedOff ? 1.0 : 0.0);
 }
 } // namespace
 
@@ -44,5 +46,7 @@ void addStatsLines(osgViewer::StatsHandler& handler)
     handler.addUserStatsLine("osgVis cull ms", text, bar, STATS_CULL_MS, 1.0f, true, false, "", "", 10.0f);
     handler.addUserStatsLine("osgVis async fallback", text, bar, STATS_ASYNC_FALLBACK, 1.0f, true, false, "", "",
                              1.0f);
+    // 1 while the view's culling costs more than it saves and every object goes to OSG's own culling.
+    handler.addUserStatsLine("osgVis backed off", text, bar, STATS_BACKED_OFF, 1.0f, true, false, "", "", 1.0f);
 }
 } // namespace osgVis

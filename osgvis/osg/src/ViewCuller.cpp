@@ -25,6 +25,8 @@ struct ViewCuller::PerView
     // Asynchronous visibility, when on and the chain answers regions; destroyed (its worker
     // joined) before `scene`, which its worker may still use.
     std::unique_ptr<core::AsyncVisibility> async;
+    core::BackOff backOff;
+    std::chrono::steady_clock::time_point previousCull{}; // when this view last culled
 
     ~PerView() { async.reset(); }
 };
@@ -66,6 +68,19 @@ void ViewCuller::setAsync(bool on, const core::AsyncOptions& options)
     _async = on;
     _asyncOptions = options;
     _views.clear();
+}
+
+void ViewCuller::setBackOff(const core::BackOffOptions& options)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    _backOffOptions = options;
+    _views.clear();
+}
+
+core::BackOffOptions ViewCuller::getBackOffOptions() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _backOffOptions;
 }
 
 bool ViewCuller::getAsync() const
@@ -115,6 +130,7 @@ std::shared_ptr<ViewCuller::PerView> ViewCuller::viewFor(const osg::Referenced* 
         view->chain = core::createChain(_modes);
         if (_async && view->chain.supportsRegions())
             view->async = std::make_unique<core::AsyncVisibility>(_modes, _asyncOptions);
+        view->backOff = core::BackOff(_backOffOptions);
     }
     return view;
 }
@@ -199,8 +215,20 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
                        viewport ? static_cast<std::uint32_t>(viewport->height()) : 1024u);
     CullStatistics figures;
     figures.async = view->async != nullptr;
+    // Do no harm, on synchronous views that record nothing: the interval since this view's last cull
+    // is the previous frame's time, with or without the chain.
+    figures.backOff = !view->async && !record && view->backOff.enabled();
+    const bool useChain =
+        !figures.backOff ||
+        view->backOff.useChain(std::chrono::duration<double>(start - view->previousCull).count());
+    view->previousCull = start;
+    if (!useChain)
+    {
+        figures.backedOff = true;
+        view->visible.reset(scene->scene.objects.size(), true);
+    }
     // A debug record describes the chain's own decisions: recording views cull synchronously.
-    if (!view->async || record || !view->async->cull(coreView, view->visible))
+    else if (!view->async || record || !view->async->cull(coreView, view->visible))
     {
         figures.asyncFallback = figures.async;
         view->chain.cull(coreView, view->visible);

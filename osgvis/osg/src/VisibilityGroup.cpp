@@ -18,6 +18,7 @@ VisibilityGroup::VisibilityGroup(const VisibilityGroup& other, const osg::CopyOp
     : osg::Group(other, copyop), _culler(new ViewCuller(other.getModes()))
 {
     _culler->setAsync(other.getAsync(), other.getAsyncOptions());
+    _culler->setBackOff(other.getBackOffOptions());
     _culler->setExtractionOptions(other.getExtractionOptions());
 }
 
