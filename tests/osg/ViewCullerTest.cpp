@@ -66,3 +66,43 @@ TEST(ViewCuller, EachViewKeepsItsOwnVisibleSet)
     EXPECT_NE(afterAdd.scene, a.scene);
     EXPECT_EQ(afterAdd.visible->ids(), (std::vector<osgVis::core::ObjectId>{1, 2}));
 }
+
+// Do no harm: with back-off on, the view probes the renderer alone on one block of 8 frames in 8
+// (those frames let every object through, flagged in the statistics) and culls with its chain on the
+// others; off, it always culls. A probe follows the schedule whatever the frame times.
+TEST(ViewCuller, BackOffProbesTheRendererAloneOnItsSchedule)
+{
+    for (const bool on : {true, false})
+    {
+        osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("frustum");
+        for (float x : {-10.f, 10.f})
+        {
+            osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+            geode->addDrawable(makeBox(osg::Vec3(x - 1, -1, -1), osg::Vec3(x + 1, 1, 1)));
+            group->addChild(geode);
+        }
+        osgVis::core::BackOffOptions options;
+        options.enabled = on;
+        group->setBackOff(options);
+        EXPECT_EQ(group->getBackOffOptions().enabled, on);
+        osg::ref_ptr<osgUtil::CullVisitor> view = new osgUtil::CullVisitor;
+        view->setIdentifier(new osgUtil::CullVisitor::Identifier);
+        const osg::Matrixd projection = osg::Matrixd::perspective(40.0, 1.0, 0.5, 100.0);
+        std::vector<unsigned> skipped;
+        for (unsigned frame = 0; frame < 72; ++frame)
+        {
+            const auto result = group->getViewCuller()->cull(*view, *group, lookingAlongX(-1), projection);
+            const osgVis::CullStatistics figures = group->getLastStatistics();
+            EXPECT_EQ(figures.backOff, on);
+            if (figures.backedOff)
+            {
+                skipped.push_back(frame);
+                EXPECT_EQ(result.visible->count(), 2u) << "a skipped frame lets every object through";
+            }
+            else
+                EXPECT_EQ(result.visible->ids(), (std::vector<osgVis::core::ObjectId>{0})) << frame;
+        }
+        const std::vector<unsigned> probe{56, 57, 58, 59, 60, 61, 62, 63}; // the 8th block of 8
+        EXPECT_EQ(skipped, on ? probe : std::vector<unsigned>{});
+    }
+}
