@@ -93,7 +93,7 @@ void parseSize(const std::string& text, unsigned& width, unsigned& height)
 std::string benchUsage()
 {
     return "usage: osgvisbench (--scene FILE | --generate office|city|floor|tetra [--triangles N] [--seed S])\n"
-           "                   [--walk FILE|auto|orbit] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
+           "                   [--walk FILE|auto|orbit] [--save-walk FILE] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
            "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
            "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8]\n"
            "                   [--mask-slowdown K] [--cull-only]\n"
@@ -109,6 +109,8 @@ std::string benchUsage()
            "  free space, never inside solid geometry) or orbit (around the model). Default: the walk\n"
            "  beside the scene, the generator's walk with --generate, else auto (an orbit when the\n"
            "  model has nowhere to stand).\n"
+           "--save-walk FILE: write the walk followed (an automatic one, too) as a walk file, to edit\n"
+           "  or replay with --walk FILE.\n"
            "--cube: every walk key becomes six 90-degree square views (HxH, H the walk's height),\n"
            "  the faces of a cube around the eye, so every metric covers the full sphere.\n"
            "--speeds, --threads: also time each module-chain mode's cull alone (no rendering) with\n"
@@ -193,6 +195,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.seed = std::uint32_t(parseUnsigned(flag, value()));
         else if (flag == "--walk")
             options.walkFile = value();
+        else if (flag == "--save-walk")
+            options.saveWalkFile = value();
         else if (flag == "--modes")
             options.modes = splitList(value(), ',');
         else if (flag == "--views")

@@ -152,6 +152,8 @@ BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& 
                                      (error ? ": " + error.message() : std::string()));
     }
     const apps::LoadedScene scene = loadBenchScene(options);
+    if (!options.saveWalkFile.empty())
+        scene.walk.save(options.saveWalkFile);
     core::Walk walk = subsampledWalk(scene.walk, options.views);
     if (options.cube)
         walk = cubeFaceWalk(walk);
