@@ -48,7 +48,7 @@ TEST(BackOff, BacksOffWhereTheChainCostsMoreThanItSaves)
     const SimulatedRun run = simulate(governor, 400, 128, [](unsigned, bool chain) { return chain ? 0.010 : 0.008; });
     EXPECT_TRUE(run.backedOff);
     EXPECT_EQ(run.switches, 1u);
-    EXPECT_EQ(run.chainFrames, 128u / 8u) << "only the probe blocks still try the chain";
+    EXPECT_LE(run.chainFrames, 128u / 8u) << "only the probe blocks still try the chain";
     EXPECT_NEAR(governor.chainFrameMs(), 10.0, 1e-9);
     EXPECT_NEAR(governor.skipFrameMs(), 8.0, 1e-9);
 }
@@ -59,7 +59,7 @@ TEST(BackOff, KeepsTheChainWhereItPays)
     const SimulatedRun run = simulate(governor, 400, 128, [](unsigned, bool chain) { return chain ? 0.006 : 0.010; });
     EXPECT_FALSE(run.backedOff);
     EXPECT_EQ(run.switches, 0u);
-    EXPECT_EQ(run.chainFrames, 128u - 128u / 8u) << "one block in eight probes the renderer alone";
+    EXPECT_GE(run.chainFrames, 128u - 128u / 8u) << "at most one block in eight probes the renderer alone";
 }
 
 TEST(BackOff, DifferencesWithinTheMarginAndNoiseChangeNothing)
@@ -91,6 +91,16 @@ TEST(BackOff, ComesBackWhenTheChainPaysAgain)
                              });
     EXPECT_FALSE(run.backedOff);
     EXPECT_EQ(run.switches, 2u);
+}
+
+TEST(BackOff, ProbesGrowRareWhileTheAnswerIsClear)
+{
+    BackOff governor;
+    // The chain halves the frame time: probes double their cycle up to 32 blocks of 8 frames.
+    const SimulatedRun run = simulate(governor, 3000, 1024, [](unsigned, bool chain) { return chain ? 0.005 : 0.010; });
+    EXPECT_FALSE(run.backedOff);
+    EXPECT_LE(1024u - run.chainFrames, 1024u / (32u * 8u) * 8u + 8u) << "about one probe block in 32";
+    EXPECT_GE(1024u - run.chainFrames, 8u) << "but it still probes";
 }
 
 TEST(BackOff, DisabledAlwaysCullsWithTheChain)

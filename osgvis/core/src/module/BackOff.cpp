@@ -11,6 +11,8 @@ BackOff::BackOff(const BackOffOptions& options) : _options(options)
 {
     _options.blockFrames = std::max(2u, _options.blockFrames);
     _options.probeEvery = std::max(2u, _options.probeEvery);
+    _options.maxProbeEvery = std::max(_options.probeEvery, _options.maxProbeEvery);
+    _cycle = _options.probeEvery;
     _options.smoothing = std::clamp(_options.smoothing, 1e-3, 1.0);
 }
 
@@ -32,14 +34,14 @@ bool BackOff::useChain(double seconds)
     }
     _first = false;
     ++_frameInBlock;
-    _currentChoice = _block == _options.probeEvery - 1 ? !_preferChain : _preferChain;
+    _currentChoice = _block == _cycle - 1 ? !_preferChain : _preferChain;
     return _currentChoice;
 }
 
 void BackOff::finishBlock()
 {
     const double mean = _counted ? _sum / _counted : 0.0;
-    const bool probe = _block == _options.probeEvery - 1;
+    const bool probe = _block == _cycle - 1;
     (_currentChoice ? _chainMs : _skipMs) = 1000.0 * mean;
     if (probe)
         _probeMean = mean;
@@ -56,12 +58,17 @@ void BackOff::finishBlock()
                 _preferChain = !_preferChain;
                 _estimate = 0.0;
                 ++_switches;
+                _cycle = _options.probeEvery;
             }
+            else if (_estimate > std::log(1.0 + 4.0 * _options.margin))
+                _cycle = std::min(2 * _cycle, _options.maxProbeEvery);
+            else
+                _cycle = _options.probeEvery;
         }
         _probeMean = 0.0;
         _previousBlockMean = mean;
     }
-    _block = (_block + 1) % _options.probeEvery;
+    _block = (_block + 1) % _cycle;
     _frameInBlock = 0;
     _sum = 0.0;
     _counted = 0;

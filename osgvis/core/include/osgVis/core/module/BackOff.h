@@ -12,7 +12,10 @@
 /// `probeEvery`-th block tries the other one. Once the block after a probe is over, the ratio of the
 /// probe's mean frame time to the mean of the blocks just before and after it (the same stretch of
 /// the walk; a steady drift of the scene's cost cancels) updates a running estimate; when the other choice has been faster by more than `margin` on average, it becomes the
-/// preferred one. A frame's time is the interval that ends at the next call, so it is counted for the
+/// preferred one. While the preferred choice wins by more than four margins, the probes grow rarer
+/// (the cycle doubles up to `maxProbeEvery` blocks), so watching costs less where the answer is
+/// clear; any closer result brings the cycle back to `probeEvery`. A frame's time is the interval
+/// that ends at the next call, so it is counted for the
 /// choice that frame used, and the first frame of each block (which may carry the previous choice's
 /// work) is left out. Skipping the chain never hides an object, so either choice is conservative.
 #include <cstdint>
@@ -23,7 +26,8 @@ struct BackOffOptions
 {
     bool enabled = true;
     unsigned blockFrames = 8;  ///< frames per block (at least 2)
-    unsigned probeEvery = 8;   ///< every how many blocks the other choice is tried (at least 2)
+    unsigned probeEvery = 8;   ///< every how many blocks the other choice is tried (at least 2)...
+    unsigned maxProbeEvery = 32; ///< ...doubling up to this while the preferred choice is clearly faster
     double margin = 0.03;      ///< how much faster (fraction) the other choice must be, on average
     double smoothing = 0.5;    ///< weight of the newest probe in the running estimate, (0, 1]
 };
@@ -54,6 +58,7 @@ private:
     bool _preferChain = true;
     bool _currentChoice = true; // the choice of the frame now being timed
     unsigned _block = 0;        // index of the current block within the probe cycle
+    unsigned _cycle = 0;        // blocks per probe cycle, probeEvery..maxProbeEvery
     unsigned _frameInBlock = 0;
     bool _first = true;
     double _sum = 0.0;          // frame times of the current block (first frame left out)
