@@ -244,9 +244,13 @@ TEST(BenchApp, ThreadingTableRunsEveryModelSyncAndAsyncConservatively)
             EXPECT_TRUE(numberField(row, "fallback_frames").has_value()) << row;
         }
         else
+        {
             EXPECT_EQ(numberField(row, "views_differing_from_main_pass"), 0.0) << row;
+        }
         if (row.find("frustum+octree") != std::string::npos)
+        {
             EXPECT_GE(numberField(row, "osgvis_ms_median").value_or(-1), 0.0) << row;
+        }
     }
     EXPECT_EQ(asyncRows, 4u);
 }

@@ -27,7 +27,7 @@ struct ContractScene
     std::string name;      // test name part
     std::string generate;  // osgvisgen arguments less -o
     std::string benchArgs; // view sampling and size
-    std::string pk3, map;  // or a real Quake 3 level: the map's path inside a Debian-installed .pk3
+    std::string pk3 = {}, map = {}; // or a real Quake 3 level: the map's path inside a Debian-installed .pk3
 };
 
 // Modes the bench runs: OSG's own culling, every non-approximate module alone, and each after
