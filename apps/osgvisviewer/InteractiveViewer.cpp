@@ -19,6 +19,7 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <mutex>
 
 namespace osgVis::viewer
 {
@@ -28,8 +29,40 @@ namespace
 // map and the statistics), with the current mode.
 std::string keyHints(const std::string& mode)
 {
-    return "mode " + mode + " | m: next mode  t: map  i: stats  y: why (not) culled  p: play walk  h: help";
+    return "mode " + mode + " | m: mode  t: map  i: stats  y: why  p: play  h: help";
 }
+
+// Keeps the hints line current: the mode the m key chose, and whether do no harm has backed off
+// (more consecutive frames skipped the chain than one probe block holds).
+class KeyHintsUpdate : public osg::Drawable::UpdateCallback
+{
+public:
+    KeyHintsUpdate(CullingModes& modes, const std::string& mode) : _modes(modes), _mode(mode) {}
+    void setMode(const std::string& mode)
+    {
+        std::lock_guard<std::mutex> lock(_mutex);
+        _mode = mode;
+        _shown.clear();
+    }
+    void update(osg::NodeVisitor*, osg::Drawable* drawable) override
+    {
+        const VisibilityGroup* group = _modes.visibilityGroup();
+        const CullStatistics figures = group ? group->getLastStatistics() : CullStatistics{};
+        _skippedInARow = figures.backedOff ? _skippedInARow + 1 : 0;
+        std::lock_guard<std::mutex> lock(_mutex);
+        const std::string text =
+            (_skippedInARow > 8 ? "backed off: culling costs more than it saves here, OSG culls alone\n" : "") +
+            keyHints(_mode);
+        if (text != _shown)
+            static_cast<osgText::Text*>(drawable)->setText(_shown = text);
+    }
+
+private:
+    CullingModes& _modes;
+    std::mutex _mutex;
+    std::string _mode, _shown;
+    unsigned _skippedInARow = 0;
+};
 
 osg::ref_ptr<osg::Camera> createKeyHintsOverlay(unsigned width, unsigned height, osg::ref_ptr<osgText::Text>& text)
 {
@@ -44,6 +77,7 @@ osg::ref_ptr<osg::Camera> createKeyHintsOverlay(unsigned width, unsigned height,
     text->setDataVariance(osg::Object::DYNAMIC); // changed by the m key while a draw thread may draw it
     text->setCharacterSize(14.0f);
     text->setPosition(osg::Vec3(10.0f, 10.0f, 0.0f));
+    text->setAlignment(osgText::Text::LEFT_BOTTOM_BASE_LINE); // a status line above grows upwards
     text->setColor(osg::Vec4(1.0f, 1.0f, 0.6f, 1.0f));
     text->setBackdropType(osgText::Text::OUTLINE);
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
@@ -59,7 +93,7 @@ class ViewerKeys : public osgGA::GUIEventHandler
 {
 public:
     ViewerKeys(CullingModes& modes, DebugMap& map, BuildingTool& buildings, const osg::Camera& camera,
-               osgText::Text* hints, osg::Node& model)
+               KeyHintsUpdate* hints, osg::Node& model)
         : _modes(modes), _map(map), _buildings(buildings), _camera(camera), _hints(hints), _model(model)
     {
     }
@@ -72,7 +106,7 @@ public:
         {
             const std::string next = _modes.nextMode();
             _modes.requestMode(next);
-            _hints->setText(keyHints(next));
+            _hints->setMode(next);
             std::cout << "osgvisviewer: mode " << next << std::endl;
             return true;
         }
@@ -120,7 +154,7 @@ private:
     DebugMap& _map;
     BuildingTool& _buildings;
     const osg::Camera& _camera;
-    osg::ref_ptr<osgText::Text> _hints;
+    osg::ref_ptr<KeyHintsUpdate> _hints;
     osg::Node& _model;
 };
 
@@ -150,7 +184,8 @@ int runInteractive(const apps::LoadedScene& scene, const ViewerOptions& options)
         viewer.setThreadingModel(apps::parseThreadingModel(options.threading));
     osg::ref_ptr<osgText::Text> hints;
     root->addChild(createKeyHintsOverlay(scene.walk.width, scene.walk.height, hints));
-    hints->setText(keyHints(options.mode));
+    osg::ref_ptr<KeyHintsUpdate> hintsUpdate = new KeyHintsUpdate(modes, options.mode);
+    hints->setUpdateCallback(hintsUpdate.get());
     viewer.setSceneData(root.get());
     viewer.setUpViewInWindow(50, 50, int(scene.walk.width), int(scene.walk.height));
     osg::Camera* camera = viewer.getCamera();
@@ -167,7 +202,7 @@ int runInteractive(const apps::LoadedScene& scene, const ViewerOptions& options)
                                if (VisibilityGroup* group = modes.visibilityGroup())
                                    group->dirtyScene();
                            });
-    viewer.addEventHandler(new ViewerKeys(modes, map, buildings, *camera, hints.get(), *scene.model));
+    viewer.addEventHandler(new ViewerKeys(modes, map, buildings, *camera, hintsUpdate.get(), *scene.model));
 
     // OSG's usual handlers, with keys moved off w/s/e (walking) and m/t (mode, map).
     osg::ref_ptr<osgViewer::StatsHandler> stats = new osgViewer::StatsHandler;
