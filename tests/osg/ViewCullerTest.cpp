@@ -94,6 +94,7 @@ TEST(ViewCuller, BackOffProbesTheRendererAloneOnItsSchedule)
             const auto result = group->getViewCuller()->cull(*view, *group, lookingAlongX(-1), projection);
             const osgVis::CullStatistics figures = group->getLastStatistics();
             EXPECT_EQ(figures.backOff, on);
+            EXPECT_EQ(result.everything, figures.backedOff) << "a skipped frame tells the drawables not to look up";
             if (figures.backedOff)
             {
                 skipped.push_back(frame);

@@ -124,7 +124,7 @@ void CullVisitor::apply(osg::Drawable& drawable)
     {
         if (path.front() != _activeRoot)
             activate(*path.front());
-        if (_active.visible)
+        if (_active.visible && !_active.everything)
         {
             const core::ObjectId id = _active.scene->find(&drawable, path);
             if (id != core::InvalidObject && !_active.visible->test(id))

@@ -30,7 +30,7 @@ bool hiddenByActiveContext(const osg::NodeVisitor& visitor, const osg::Drawable&
     // note: nested VisibilityGroups each hold a context; any one of them may hide the drawable.
     for (const CullingContext& context : activeContexts())
     {
-        if (context.visitor != &visitor || context.rootDepth >= path.size())
+        if (context.everything || context.visitor != &visitor || context.rootDepth >= path.size())
             continue;
         const core::ObjectId id = context.scene->find(&drawable, path, context.rootDepth);
         if (id != core::InvalidObject && !context.visible->test(id))

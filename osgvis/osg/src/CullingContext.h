@@ -18,6 +18,7 @@ struct CullingContext
     const ExtractedScene* scene = nullptr;
     const core::VisibleSet* visible = nullptr;
     std::size_t rootDepth = 0; // index of the extraction root in the visitor's node path
+    bool everything = false;   // every object is visible: no drawable needs looking up
 };
 
 // Pushes a context for the lifetime of the scope.

@@ -257,7 +257,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         std::lock_guard<std::mutex> lock(_mutex);
         _last = figures;
     }
-    return {scene, &view->visible};
+    return {scene, &view->visible, figures.backedOff};
 }
 
 CullStatistics ViewCuller::getLastStatistics() const

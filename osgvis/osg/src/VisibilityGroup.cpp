@@ -98,9 +98,9 @@ void VisibilityGroup::traverse(osg::NodeVisitor& nv)
     installCullCallbacks(*result.scene);
 
     const osg::NodePath& path = cv->getNodePath();
-    const ScopedCullingContext context({cv, result.scene.get(), result.visible, path.size() - 1});
+    const ScopedCullingContext context({cv, result.scene.get(), result.visible, path.size() - 1, result.everything});
     const std::vector<ChildRange>& ranges = result.scene->childRanges;
-    const bool rangesMatch = ranges.size() == _children.size();
+    const bool rangesMatch = !result.everything && ranges.size() == _children.size();
     for (unsigned i = 0; i < _children.size(); ++i)
     {
         if (rangesMatch && ranges[i].closed && !anyVisible(ranges[i], *result.visible))
