@@ -32,6 +32,7 @@ public:
     void clear()
     {
         _relations.clear();
+        _occluders.clear();
         decidedBy = NoDecider;
     }
 
@@ -43,5 +44,7 @@ public:
 
 private:
     std::vector<OccluderRelation> _relations;
+    std::vector<std::uint32_t> _occluders; // _relations[i].occluder, packed: the lookup scans only these
+
 };
 } // namespace osgVis::core

@@ -8,6 +8,7 @@
 #include <osgVis/core/octree/OctreeModule.h>
 
 #include <osgVis/core/occluders/CoplanarUnion.h>
+#include "OccluderShadow.h"
 #include "OcclusionCache.h"
 #include "OcclusionTree.h"
 
@@ -99,6 +100,7 @@ struct OctreeModule::Impl
     double nearDistance = 0.0;
     std::vector<std::uint32_t> active;
     std::vector<double> margins; // per polygon index, valid for `active` ones
+    OccluderShadows shadows;     // of the `active` ones, for a point eye
     std::vector<Aabb> polygonBounds;
     std::vector<std::pair<double, std::uint32_t>> ranked;
     double threshold = 0.0;
@@ -362,6 +364,8 @@ void OctreeModule::Impl::activateRanked()
     {
         margins[o] = marginOf(polygons[o]);
         active.push_back(o);
+        if (eyes.halfExtent == Vec3(0.0))
+            shadows.add(o, polygons[o], eye, margins[o]);
     }
 }
 
@@ -539,6 +543,8 @@ Occlusion OctreeModule::Impl::testBox(BoxOcclusionCache& cache, const Aabb& box,
 
     for (std::uint32_t o : occluders)
     {
+        if (shadows.misses(o, box))
+            continue; // hides none of the box: Visible, without its planes
         const BoxOccluderPlanes& planes = cache.planesFor(o, polygons[o], box, frame, computed);
         if (!computed)
             ++out.statistics.cachedDecisions;
@@ -689,6 +695,7 @@ void OctreeModule::Impl::beginQuery(const OctreeOptions& options, const Vec3& ce
             cache.clear();
     }
     active.clear();
+    shadows.begin(polygons.size());
 }
 
 void OctreeModule::cull(const View& view, VisibleSet& visible)
