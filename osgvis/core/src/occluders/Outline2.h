@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Convex outlines in a plane's own 2-D coordinates, as the coplanar unions build them: signed
+// area, the intersection of two convex outlines, the convex hull, and whether two convex
+// outlines together are exactly their hull (so their union is one convex polygon).
+#include <osgVis/core/geometry/Math.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace osgVis::core
+{
+using Point2 = glm::dvec2;
+using Outline2 = std::vector<Point2>; // counter-clockwise unless said otherwise
+
+/// (a − o) × (b − o): positive when o → a → b turns left.
+double cross2(const Point2& o, const Point2& a, const Point2& b);
+double signedArea(const Outline2& outline);
+/// The part of convex `subject` inside convex `clip`.
+Outline2 convexIntersection(Outline2 subject, const Outline2& clip);
+/// Indices of `points` on their convex hull, counter-clockwise; collinear points are dropped.
+std::vector<std::size_t> convexHullIndices(const Outline2& points);
+/// Indices into a followed by b (b's offset by a.size()) of the hull of a ∪ b when that hull is
+/// exactly their union (they overlap or abut and leave no notch or gap) and has at most
+/// `maxCorners` corners; empty otherwise.
+std::vector<std::size_t> convexUnionIndices(const Outline2& a, const Outline2& b, std::size_t maxCorners);
+} // namespace osgVis::core
