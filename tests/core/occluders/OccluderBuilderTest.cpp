@@ -299,33 +299,64 @@ TEST(OccluderBuilder, WallsOfSeparateObjectsLinkAcrossTheirCorner)
     EXPECT_EQ(polygons[1].vertices.size(), 4u);
 }
 
-TEST(OccluderBuilder, CornerSplitDifferentlyOnEachSideStaysUnlinked)
+TEST(OccluderBuilder, CornerSplitDifferentlyOnEachSideLinksOnlyAfterTJunctionRepair)
 {
-    // Heights 0,1,2,3 against 0,0.6,…,3: T-junctions all along the corner.
+    // Heights 0,1,2,3 against 0,0.6,…,3: T-junctions all along the corner. Repair gives each wall
+    // the other's vertices on the corner edge, so the pieces between them link one to one; with
+    // one neighbour all along, each wall then collapses the corner to one shared edge.
     Scene scene;
     addObject(scene, tessellatedRectangle(Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(0, 0, 3), 3));
     addObject(scene, tessellatedRectangle(Vec3(4, 0, 0), Vec3(0, 4, 0), Vec3(0, 0, 3), 5));
+    OccluderBuildOptions unrepaired;
+    unrepaired.repairTJunctions = false;
+    const auto apart = buildOccluderPolygons(scene, unrepaired);
+    ASSERT_EQ(apart.size(), 2u);
+    EXPECT_EQ(linkedEdges(apart[0]), 0u);
+    EXPECT_EQ(linkedEdges(apart[1]), 0u);
+
     const auto polygons = buildOccluderPolygons(scene);
     ASSERT_EQ(polygons.size(), 2u);
     expectWellFormed(polygons);
-    EXPECT_EQ(linkedEdges(polygons[0]), 0u);
-    EXPECT_EQ(linkedEdges(polygons[1]), 0u);
+    EXPECT_EQ(linkedEdges(polygons[0]), 1u);
+    EXPECT_EQ(linkedEdges(polygons[1]), 1u);
+    EXPECT_EQ(polygons[0].vertices.size(), 4u);
+    EXPECT_EQ(polygons[1].vertices.size(), 4u);
+    EXPECT_NEAR(polygons[0].area, 12.0, 1e-9);
 }
 
-TEST(OccluderBuilder, TJunctionEdgesStayUnlinked)
+TEST(OccluderBuilder, TJunctionRepairLinksHalfAnEdge)
 {
-    // B's edge (0,0)–(1,0) covers half of A's edge (0,0)–(2,0): no exact shared edge.
+    // B's edge (0,0)–(1,0) covers half of A's edge (0,0)–(2,0): A gets B's corner (1,0) on that
+    // edge and the halves link. Coplanar, the two also give the pieces of their union.
     for (const bool coplanar : {true, false})
     {
         Scene scene;
         addObject(scene, {{Vec3f(0, 0, 0), Vec3f(2, 0, 0), Vec3f(1, 2, 0)}});
         const Vec3f apex = coplanar ? Vec3f(0.5f, -1, 0) : Vec3f(0.5f, 0, -1);
         addObject(scene, {{Vec3f(1, 0, 0), Vec3f(0, 0, 0), apex}});
-        const auto polygons = buildOccluderPolygons(scene);
+        OccluderBuildOptions plain;
+        plain.repairTJunctions = false;
+        plain.planarUnions = false;
+        const auto apart = buildOccluderPolygons(scene, plain);
+        ASSERT_EQ(apart.size(), 2u);
+        for (const OccluderPolygon& p : apart)
+            EXPECT_EQ(linkedEdges(p), 0u);
+
+        OccluderBuildOptions repaired;
+        repaired.planarUnions = false;
+        const auto polygons = buildOccluderPolygons(scene, repaired);
         ASSERT_EQ(polygons.size(), 2u);
         expectWellFormed(polygons);
-        for (const OccluderPolygon& p : polygons)
-            EXPECT_EQ(linkedEdges(p), 0u);
+        const OccluderPolygon& a = polygons[0];
+        ASSERT_EQ(a.vertices.size(), 4u); // (0,0), (1,0), (2,0), (1,2)
+        EXPECT_EQ(linkedEdges(a), 1u);
+        EXPECT_EQ(linkedEdges(polygons[1]), 1u);
+        for (std::size_t i = 0; i < 4; ++i)
+            if (a.neighbours[i] == 1u)
+            {
+                EXPECT_EQ(a.vertices[i], Vec3(0, 0, 0));
+                EXPECT_EQ(a.vertices[(i + 1) % 4], Vec3(1, 0, 0));
+            }
     }
 }
 
@@ -491,6 +522,8 @@ TEST(OccluderBuilder, StatedOccludersLinkAcrossSharedEdges)
 TEST(OccluderBuilder, WeldingJoinsVerticesWithinTheTolerance)
 {
     // Two triangles of a unit square whose shared corners differ by `gap`.
+    // (Without the union pieces: apart, the two overlap in a sliver, and their union would be a
+    // polygon of its own.)
     auto build = [](float gap)
     {
         Scene scene;
@@ -499,6 +532,7 @@ TEST(OccluderBuilder, WeldingJoinsVerticesWithinTheTolerance)
         OccluderBuildOptions options;
         options.weldTolerance = 1e-4; // relative to the scene diagonal, √2
         options.coplanarAngle = 1e-3;
+        options.planarUnions = false;
         return buildOccluderPolygons(scene, options);
     };
     const auto welded = build(1e-5f);
@@ -539,7 +573,9 @@ TEST(OccluderBuilder, ManySidedDiscIsCutBelowTheVertexCap)
     }
     Scene scene;
     addObject(scene, triangles);
-    const auto polygons = buildOccluderPolygons(scene);
+    OccluderBuildOptions merged; // the merge alone (united again, the pieces would come twice)
+    merged.planarUnions = false;
+    const auto polygons = buildOccluderPolygons(scene, merged);
     ASSERT_GE(polygons.size(), 2u);
     EXPECT_LE(polygons.size(), 8u);
     expectWellFormed(polygons);
@@ -571,4 +607,65 @@ TEST(OccluderBuilder, GeneratedBlocksOfBoxesKeepEveryFace)
     ASSERT_EQ(polygons.size(), 1u + 6u * blocks * blocks);
     for (std::size_t p = 1; p < polygons.size(); ++p)
         EXPECT_EQ(linkedEdges(polygons[p]), 4u);
+}
+
+namespace
+{
+std::vector<const OccluderPolygon*> unionsOf(const std::vector<OccluderPolygon>& polygons)
+{
+    std::vector<const OccluderPolygon*> out;
+    for (const OccluderPolygon& p : polygons)
+        if (!p.parts.empty())
+            out.push_back(&p);
+    return out;
+}
+} // namespace
+
+TEST(OccluderBuilder, AWallOfSeveralObjectsAlsoHidesAsOnePolygonNamingThemAll)
+{
+    // A BSP compiler's wall: the lower face spans the two upper ones (a T-junction at (1, 0, 1)),
+    // each a drawable of its own, two-sided and wound either way.
+    Scene scene;
+    addObject(scene, square(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 0, 1)));
+    addObject(scene, square(Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(1, 0, 0))); // wound the other way
+    addObject(scene, square(Vec3(1, 0, 1), Vec3(1, 0, 0), Vec3(0, 0, 1)));
+    const auto polygons = buildOccluderPolygons(scene);
+    expectWellFormed(polygons);
+    const auto unions = unionsOf(polygons);
+    ASSERT_EQ(unions.size(), 1u);
+    EXPECT_NEAR(unions[0]->area, 4.0, 1e-9);
+    // The square, with the faces' corners on its outline kept where a link starts or ends.
+    Aabb bounds;
+    for (const Vec3& v : unions[0]->vertices)
+        bounds.expand(v);
+    EXPECT_EQ(bounds.min, Vec3(0, 0, 0));
+    EXPECT_EQ(bounds.max, Vec3(2, 0, 2));
+    EXPECT_EQ(unions[0]->parts, (std::vector<ObjectId>{0, 1, 2}));
+    EXPECT_EQ(unions[0]->owner, 0u);
+    EXPECT_EQ(polygons.size(), 4u) << "the faces stay, with their links";
+
+    OccluderBuildOptions off;
+    off.planarUnions = false;
+    EXPECT_TRUE(unionsOf(buildOccluderPolygons(scene, off)).empty());
+}
+
+TEST(OccluderBuilder, OnlyFacesInOnePlaneFacingAlikeUnite)
+{
+    const auto unionCount = [](float offset, std::uint32_t flagsA, std::uint32_t flagsB, bool flipB)
+    {
+        Scene scene;
+        addObject(scene, square(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)), flagsA);
+        addObject(scene,
+                  flipB ? square(Vec3(1, 0, offset), Vec3(0, 1, 0), Vec3(1, 0, 0))
+                        : square(Vec3(1, 0, offset), Vec3(1, 0, 0), Vec3(0, 1, 0)),
+                  flagsB);
+        return unionsOf(buildOccluderPolygons(scene)).size();
+    };
+    EXPECT_EQ(unionCount(0.0f, OBJECT_NONE, OBJECT_NONE, false), 1u);
+    EXPECT_EQ(unionCount(0.0f, OBJECT_NONE, OBJECT_NONE, true), 1u) << "two-sided: either winding";
+    EXPECT_EQ(unionCount(1e-3f, OBJECT_NONE, OBJECT_NONE, false), 0u) << "a step of 1e-3 is another plane";
+    EXPECT_EQ(unionCount(0.0f, OBJECT_CULL_BACK, OBJECT_CULL_BACK, false), 1u);
+    EXPECT_EQ(unionCount(0.0f, OBJECT_CULL_BACK, OBJECT_CULL_BACK, true), 0u) << "one-sided, facing away";
+    EXPECT_EQ(unionCount(0.0f, OBJECT_CULL_BACK, OBJECT_NONE, false), 0u) << "one-sided with two-sided";
+    EXPECT_EQ(unionCount(0.0f, OBJECT_NONE, OBJECT_DYNAMIC, false), 0u) << "a moving object is no occluder";
 }

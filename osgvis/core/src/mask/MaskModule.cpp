@@ -60,6 +60,16 @@ Vec3 viewDirection(const View& view)
     return glm::normalize(Vec3(inverse * Vec4(0.0, 0.0, -1.0, 0.0)));
 }
 
+// The mask fuses occluders in image space already: the extra union pieces cost rasterization and
+// measured no gain on the real levels (tests/bench/results/real-levels/README.md), so it goes
+// without them.
+OccluderBuildOptions maskOccluderBuild()
+{
+    OccluderBuildOptions options;
+    options.planarUnions = false;
+    return options;
+}
+
 // Polygons of a few objects (inserted during the walk), built on a scene of just those objects,
 // then renumbered into the module's polygon list.
 void appendObjectPolygons(const Scene& scene, const std::vector<ObjectId>& ids, const OccluderBuildOptions& options,
@@ -84,6 +94,8 @@ void appendObjectPolygons(const Scene& scene, const std::vector<ObjectId>& ids, 
     for (OccluderPolygon& polygon : built)
     {
         polygon.owner = polygon.owner == InvalidObject ? InvalidObject : ids[polygon.owner];
+        for (ObjectId& part : polygon.parts)
+            part = ids[part];
         for (std::uint32_t& n : polygon.neighbours)
             n = n == NoNeighbour ? NoNeighbour : n + base;
         polygons.push_back(std::move(polygon));
@@ -96,12 +108,29 @@ struct MaskModule::Impl
     const Scene* scene = nullptr;
     MaskKdTree tree;
     std::vector<OccluderPolygon> polygons;
-    std::vector<std::vector<std::uint32_t>> polygonsOf; // per object
+    std::vector<std::vector<std::uint32_t>> polygonsOf; // per object (a union of several: each of them)
+    std::vector<std::uint32_t> selectedIn;              // per polygon: critical frame that selected it last
+    std::uint32_t criticalCount = 0;
     std::vector<std::uint32_t> statedPolygons;          // stated occluders without an owner object
     std::vector<std::uint8_t> usable;                   // per object: may be an occluder
     std::vector<std::uint8_t> moving;                   // per object: dynamic or moved: tested every frame
     std::vector<std::uint8_t> present;
     std::vector<ObjectId> movingIds;
+
+    // Files polygon i under its owner, or under every object of a union.
+    void addToOwners(std::uint32_t i)
+    {
+        const OccluderPolygon& polygon = polygons[i];
+        if (polygon.parts.empty())
+        {
+            if (polygon.owner < polygonsOf.size())
+                polygonsOf[polygon.owner].push_back(i);
+            return;
+        }
+        for (ObjectId part : polygon.parts)
+            if (part < polygonsOf.size())
+                polygonsOf[part].push_back(i);
+    }
 
     OcclusionMask mask;
     MaskRasterScratch scratch;
@@ -174,17 +203,17 @@ void MaskModule::setScene(const Scene& scene)
     Impl& m = *_impl;
     const std::vector<SceneObject>& objects = scene.objects;
     m.scene = &scene;
-    m.polygons = buildOccluderPolygons(scene);
+    m.polygons = buildOccluderPolygons(scene, maskOccluderBuild());
     m.polygonsOf.assign(objects.size(), {});
     m.statedPolygons.clear();
     for (std::uint32_t i = 0; i < m.polygons.size(); ++i)
     {
-        const ObjectId owner = m.polygons[i].owner;
-        if (owner == InvalidObject)
+        if (m.polygons[i].owner == InvalidObject)
             m.statedPolygons.push_back(i);
-        else if (owner < objects.size())
-            m.polygonsOf[owner].push_back(i);
+        else
+            m.addToOwners(i);
     }
+    m.selectedIn.assign(m.polygons.size(), 0);
     m.usable.assign(objects.size(), 0);
     m.moving.assign(objects.size(), 0);
     m.present.assign(objects.size(), 1);
@@ -298,9 +327,10 @@ void MaskModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange
         if (!newStatic.empty())
         {
             const std::size_t before = m.polygons.size();
-            appendObjectPolygons(scene, newStatic, OccluderBuildOptions(), m.polygons);
+            appendObjectPolygons(scene, newStatic, maskOccluderBuild(), m.polygons);
             for (std::size_t i = before; i < m.polygons.size(); ++i)
-                m.polygonsOf[m.polygons[i].owner].push_back(static_cast<std::uint32_t>(i));
+                m.addToOwners(static_cast<std::uint32_t>(i));
+            m.selectedIn.resize(m.polygons.size(), 0);
             for (ObjectId id : newStatic)
                 m.usable[id] = !m.polygonsOf[id].empty();
         }
@@ -411,8 +441,25 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
         input.measure = _options.measure;
         const std::vector<ObjectId> occluders = selectMaskOccluders(input);
         std::vector<std::uint32_t> selected = m.statedPolygons;
+        // A union of several objects' faces serves while every one of them stands still, and the
+        // marks rest on all of them (removing or moving any forgets the marks).
+        std::vector<ObjectId> restingOn = occluders;
+        ++m.criticalCount;
         for (ObjectId id : occluders)
-            selected.insert(selected.end(), m.polygonsOf[id].begin(), m.polygonsOf[id].end());
+            for (std::uint32_t p : m.polygonsOf[id])
+            {
+                if (m.selectedIn[p] == m.criticalCount)
+                    continue;
+                const std::vector<ObjectId>& parts = m.polygons[p].parts;
+                if (!std::all_of(parts.begin(), parts.end(),
+                                 [&](ObjectId part) { return part < m.present.size() && m.present[part] && !m.moving[part]; }))
+                    continue;
+                m.selectedIn[p] = m.criticalCount;
+                selected.push_back(p);
+                restingOn.insert(restingOn.end(), parts.begin(), parts.end());
+            }
+        std::sort(restingOn.begin(), restingOn.end());
+        restingOn.erase(std::unique(restingOn.begin(), restingOn.end()), restingOn.end());
         stats.selectMs = millisecondsSince(start);
 
         start = Clock::now();
@@ -466,7 +513,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
             deltaMin = 0.0;
         m.delta = deltaMin;
         m.validUntil = t + deltaMin / speed;
-        m.alive.push_back({eye, t, deltaMin, deltaMax, occluders});
+        m.alive.push_back({eye, t, deltaMin, deltaMax, restingOn});
         stats.occluderObjects = static_cast<std::uint32_t>(occluders.size());
         stats.occluderPolygons = static_cast<std::uint32_t>(m.groups.polygons.size());
         stats.groups = static_cast<std::uint32_t>(m.groups.groupCount());

@@ -5,6 +5,7 @@
 
 #include "BoundaryLoop.h"
 #include "CoplanarMerger.h"
+#include "OccluderRegion.h"
 #include "VertexWelder.h"
 
 #include <algorithm>
@@ -55,13 +56,7 @@ struct ObjectTriangles
     std::vector<MergeTriangle> triangles;
 };
 
-struct Region
-{
-    std::vector<std::uint32_t> loop; // welded ids, counter-clockwise around `normal`
-    Vec3 normal;
-    ObjectId owner;
-    bool oneSided;
-};
+using Region = OccluderRegion;
 
 // The triangle with welded corners, or false when its plane cannot be trusted: repeated or
 // collinear corners, or a sliver thinner than the plane tolerance relative to its length.
@@ -95,6 +90,7 @@ std::vector<std::vector<std::uint32_t>> edgeNeighbours(const std::vector<Region>
     {
         std::uint64_t key;
         std::uint32_t region, index;
+        bool forward; // runs from the smaller id to the larger
     };
     std::vector<Edge> edges;
     std::size_t total = 0;
@@ -107,7 +103,7 @@ std::vector<std::vector<std::uint32_t>> edgeNeighbours(const std::vector<Region>
         for (std::uint32_t i = 0; i < loop.size(); ++i)
         {
             const std::uint32_t a = loop[i], b = loop[(i + 1) % loop.size()];
-            edges.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), r, i});
+            edges.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), r, i, a < b});
         }
     }
     std::sort(edges.begin(), edges.end(),
@@ -125,8 +121,11 @@ std::vector<std::vector<std::uint32_t>> edgeNeighbours(const std::vector<Region>
         while (j < edges.size() && edges[j].key == edges[i].key)
             ++j;
         // note: three or more polygons on one edge (a fin on a wall) link none of them; an
-        // unlinked edge is always safe.
-        if (j - i == 2 && edges[i].region != edges[i + 1].region)
+        // unlinked edge is always safe. Two link only when they run the edge in opposite
+        // directions, as consistently wound neighbours do: then, facing the eye alike, they lie
+        // on opposite sides of it on screen, which the fused tests rely on. Two that run it the
+        // same way lie on one side (coplanar overlapping faces, a union piece over its faces).
+        if (j - i == 2 && edges[i].region != edges[i + 1].region && edges[i].forward != edges[i + 1].forward)
         {
             across[edges[i].region][edges[i].index] = edges[i + 1].region;
             across[edges[i + 1].region][edges[i + 1].index] = edges[i].region;
@@ -238,22 +237,35 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
                       });
 
     std::vector<Region> regions;
-    auto keepIfLargeEnough = [&](Region region)
-    {
-        const double area = 0.5 * glm::length(loopNormal(region.loop, positions));
-        if (std::isfinite(area) && area > 0.0 && area >= options.minArea)
-            regions.push_back(std::move(region));
-    };
     for (std::size_t i = 0; i < objects.size(); ++i)
     {
         for (MergedPolygon& polygon : mergedPerObject[i])
-            keepIfLargeEnough({std::move(polygon.loop), polygon.normal, objects[i].owner, objects[i].oneSided});
+            regions.push_back({std::move(polygon.loop), polygon.normal, objects[i].owner, objects[i].oneSided, {}});
     }
     for (std::vector<std::uint32_t>& loop : statedLoops)
     {
         const Vec3 normal = glm::normalize(loopNormal(loop, positions));
-        keepIfLargeEnough({std::move(loop), normal, InvalidObject, false});
+        regions.push_back({std::move(loop), normal, InvalidObject, false, {}});
     }
+    if (options.planarUnions)
+    {
+        RegionUnionOptions unionOptions;
+        unionOptions.sceneSize = sceneSize;
+        unionOptions.turnTolerance = planeTolerance;
+        unionOptions.planeTolerance = planeTolerance;
+        unionOptions.maxCorners = MaxCorners;
+        unitePlanarRegions(regions, welder, unionOptions);
+    }
+    // Small pieces go only now: many small faces may unite into a large one.
+    regions.erase(std::remove_if(regions.begin(), regions.end(),
+                                 [&](const Region& region)
+                                 {
+                                     const double area = 0.5 * glm::length(loopNormal(region.loop, positions));
+                                     return !(std::isfinite(area) && area > 0.0 && area >= options.minArea);
+                                 }),
+                  regions.end());
+    if (options.repairTJunctions)
+        repairTJunctions(regions, positions, sceneSize);
 
     // Straight-line vertices go, except where the neighbour across the outline changes: there
     // both polygons keep the vertex, so their shared edges still match end to end.
@@ -285,6 +297,7 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
         polygon.plane = Plane::fromPointNormal(polygon.centroid, newell / glm::length(newell));
         polygon.oneSided = region.oneSided;
         polygon.owner = region.owner;
+        polygon.parts = region.parts;
         usable[r] = corners.size() >= 3 && polygon.area > 0.0 && isFinite(polygon.plane.normal) &&
                     std::isfinite(polygon.plane.d);
     }
@@ -305,7 +318,7 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
             for (std::size_t j = 0; j < other.size() && !matched; ++j)
             {
                 const std::uint32_t c = other[j], d = other[(j + 1) % other.size()];
-                matched = ((c == b && d == a) || (c == a && d == b)) && polygons[q].neighbours[j] == p;
+                matched = c == b && d == a && polygons[q].neighbours[j] == p;
             }
             if (!matched)
                 q = NoNeighbour;

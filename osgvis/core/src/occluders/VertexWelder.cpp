@@ -32,7 +32,7 @@ VertexWelder::VertexWelder(const Vec3& origin, double size, double tolerance)
     _cellSize = std::max(16.0 * _tolerance, floorSize);
 }
 
-std::uint32_t VertexWelder::find(const CellKey& key, const Vec3& p) const
+std::uint32_t VertexWelder::find(const CellKey& key, const Vec3& p, double tolerance) const
 {
     const auto it = _firstInCell.find(key);
     if (it == _firstInCell.end())
@@ -41,7 +41,7 @@ std::uint32_t VertexWelder::find(const CellKey& key, const Vec3& p) const
     for (std::uint32_t v = it->second; v != None; v = _nextInCell[v])
     {
         const Vec3 d = _positions[v] - p;
-        if (glm::dot(d, d) <= _tolerance * _tolerance)
+        if (glm::dot(d, d) <= tolerance * tolerance)
             best = std::min(best, v);
     }
     return best;
@@ -54,15 +54,16 @@ void VertexWelder::reserve(std::size_t vertices)
     _positions.reserve(vertices);
 }
 
-std::uint32_t VertexWelder::weld(const Vec3& p)
+std::uint32_t VertexWelder::weld(const Vec3& p, double tolerance)
 {
+    tolerance = std::clamp(tolerance, 0.0, _tolerance);
     const Vec3 local = (p - _origin) / _cellSize;
     const CellKey key{std::int64_t(std::floor(local.x)), std::int64_t(std::floor(local.y)),
                       std::int64_t(std::floor(local.z))};
 
     // Per axis: the own cell, plus the neighbour the tolerance ball reaches into, if any.
     int lo[3], hi[3];
-    const double reach = _tolerance / _cellSize;
+    const double reach = tolerance / _cellSize;
     const double fractions[3] = {local.x - double(key.x), local.y - double(key.y), local.z - double(key.z)};
     for (int axis = 0; axis < 3; ++axis)
     {
@@ -83,7 +84,7 @@ std::uint32_t VertexWelder::weld(const Vec3& p)
     for (int dz = lo[2]; dz <= hi[2]; ++dz)
         for (int dy = lo[1]; dy <= hi[1]; ++dy)
             for (int dx = lo[0]; dx <= hi[0]; ++dx)
-                best = std::min(best, find({key.x + dx, key.y + dy, key.z + dz}, p));
+                best = std::min(best, find({key.x + dx, key.y + dy, key.z + dz}, p, tolerance));
     if (best != None)
         return best;
 

@@ -20,7 +20,10 @@ public:
     void reserve(std::size_t vertices);
 
     // Id of the first vertex within the tolerance of `p`, or a new id; ids are dense from 0.
-    std::uint32_t weld(const Vec3& p);
+    std::uint32_t weld(const Vec3& p) { return weld(p, _tolerance); }
+    // The same with a tighter tolerance (at most the welder's), for points that must not move as
+    // far as the welder lets input vertices move.
+    std::uint32_t weld(const Vec3& p, double tolerance);
     const std::vector<Vec3>& positions() const { return _positions; }
 
 private:
@@ -34,7 +37,7 @@ private:
         std::size_t operator()(const CellKey& k) const;
     };
 
-    std::uint32_t find(const CellKey& key, const Vec3& p) const;
+    std::uint32_t find(const CellKey& key, const Vec3& p, double tolerance) const;
 
     Vec3 _origin;
     double _tolerance;

@@ -115,6 +115,7 @@ struct OctreeModule::Impl
     OcclusionTree occlusionTree;
     std::vector<std::pair<double, ObjectId>> sweepOrder;
     std::vector<std::uint64_t> insertedAs; // per polygon: 2·stamp + (1 when flipped) if inserted this round
+    std::vector<std::uint32_t> sweptIn;    // per polygon: the frame it joined the sweep's tree
     std::uint64_t insertStamp = 0;
     std::vector<Vec3> insertVertices;
     std::vector<double> insertMargins;
@@ -157,7 +158,17 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
     objectPolygons.assign(scene.objects.size(), {});
     statedPolygons.clear();
     for (std::uint32_t p = 0; p < polygons.size(); ++p)
-        (polygons[p].owner < scene.objects.size() ? objectPolygons[polygons[p].owner] : statedPolygons).push_back(p);
+    {
+        // A union of several objects' faces joins the sweep's tree with whichever of them is kept
+        // first (each is static; the others are drawn or hidden behind what is drawn).
+        if (polygons[p].owner >= scene.objects.size())
+            statedPolygons.push_back(p);
+        else if (polygons[p].parts.empty())
+            objectPolygons[polygons[p].owner].push_back(p);
+        for (ObjectId part : polygons[p].parts)
+            if (part < scene.objects.size())
+                objectPolygons[part].push_back(p);
+    }
     largestPolygonArea.assign(scene.objects.size(), 0.0);
     for (ObjectId id = 0; id < scene.objects.size(); ++id)
         for (std::uint32_t p : objectPolygons[id])
@@ -183,6 +194,7 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
     objectCaches.assign(scene.objects.size(), BoxOcclusionCache());
     margins.assign(polygons.size(), 0.0);
     insertedAs.assign(polygons.size(), 0);
+    sweptIn.assign(polygons.size(), 0);
     insertStamp = 0;
     chooseFrontier(tree.empty() || tree.root().itemCount < options.parallelMinObjects ? 0 : 64);
     const std::size_t depth = treeDepth();
@@ -477,7 +489,7 @@ void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch,
     {
         const OccluderPolygon& polygon = polygons[p];
         const double side = polygon.plane.distance(eye);
-        const bool usable = (side > 0.0 || (!polygon.oneSided && side < 0.0)) &&
+        const bool usable = sweptIn[p] != frame && (side > 0.0 || (!polygon.oneSided && side < 0.0)) &&
                             areaAngle(polygon, eye) >= minAreaAngle &&
                             std::all_of(polygon.vertices.begin(), polygon.vertices.end(),
                                         [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; }) &&
@@ -495,6 +507,7 @@ void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch,
             continue;
         const OccluderPolygon& polygon = polygons[p];
         const bool flipped = (insertedAs[p] & 1u) != 0;
+        sweptIn[p] = frame;
         const double margin = marginOf(polygon);
         const std::size_t n = polygon.vertices.size();
         insertVertices.resize(n);

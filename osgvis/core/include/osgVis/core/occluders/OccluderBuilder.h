@@ -22,6 +22,13 @@ struct OccluderBuildOptions
     double planeTolerance = 1e-6;
     /// Vertices closer than this (relative to the scene size) are welded before connectivity.
     double weldTolerance = 1e-7;
+    /// Coplanar faces of different objects, and overlapping coplanar faces of one, also give the
+    /// convex pieces of their union as polygons of their own (docs/occluders.md): a wall of many
+    /// faces hides as one. Such a polygon names its objects in OccluderPolygon::parts; the faces
+    /// stay as they were.
+    bool planarUnions = true;
+    /// A vertex lying on another polygon's edge splits that edge, so both share it (links).
+    bool repairTJunctions = true;
     /// Use the triangles of every eligible object (static, opaque, not OBJECT_NO_AUTO_OCCLUDER), not
     /// only OBJECT_OCCLUDER objects and the scene's stated occluder polygons.
     bool sceneGeometry = true;

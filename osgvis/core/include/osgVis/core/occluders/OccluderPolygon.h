@@ -23,6 +23,11 @@ struct OccluderPolygon
     std::vector<std::uint32_t> neighbours; ///< per edge i (vertices[i] → vertices[i+1]): index of the
                                            // polygon sharing exactly that edge, or NoNeighbour
     bool oneSided = false;                 ///< hides only from the side plane.normal points to (face culling)
-    ObjectId owner = InvalidObject;        ///< object it comes from; InvalidObject for a stated occluder
+    ObjectId owner = InvalidObject;        ///< object it comes from (the first of `parts`); InvalidObject
+                                           // for a stated occluder
+    /// Every object it covers part of, ascending, when it unites faces of several (coplanar faces
+    /// of neighbouring objects); empty when it comes from `owner` alone. Such a polygon stands for
+    /// all of them: it may occlude only while every one is static and drawn (or hidden).
+    std::vector<ObjectId> parts;
 };
 } // namespace osgVis::core
