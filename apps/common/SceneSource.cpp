@@ -4,11 +4,11 @@
 #include "OrbitWalk.h"
 #include "FreeSpaceWalk.h"
 
+#include <osgVis/ModelRepair>
 #include <osgVis/VisibilityGroup>
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/gen/Generator.h>
 
-#include <osg/NodeVisitor>
 #include <osgDB/ReadFile>
 #include <osgDB/Registry>
 
@@ -21,34 +21,6 @@ namespace osgVis::apps
 {
 namespace
 {
-// OSG 3.6.5's bsp plugin (Quake 3 levels) attaches PolygonMode LINE to every face with the value
-// OFF, meaning it off; but OSG applies an attribute whatever its value (ON/OFF mean something only
-// for modes, and OFF is setAttribute's default), so the level draws as wireframe and nothing hides
-// anything. For .bsp files the PolygonMode attributes are removed.
-class PolygonModeRemover : public osg::NodeVisitor
-{
-public:
-    PolygonModeRemover() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-    unsigned removed = 0;
-
-    void apply(osg::Node& node) override
-    {
-        clean(node.getStateSet());
-        traverse(node);
-    }
-    void apply(osg::Drawable& drawable) override { clean(drawable.getStateSet()); }
-
-private:
-    void clean(osg::StateSet* stateSet)
-    {
-        if (stateSet && stateSet->getAttribute(osg::StateAttribute::POLYGONMODE))
-        {
-            stateSet->removeAttribute(osg::StateAttribute::POLYGONMODE);
-            ++removed;
-        }
-    }
-};
-
 bool hasExtension(const std::string& path, const std::string& wanted)
 {
     std::string extension = std::filesystem::path(path).extension().string();
@@ -64,14 +36,9 @@ osg::ref_ptr<osg::Node> readModel(const std::string& path)
     osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(path);
     if (!model)
         throw SceneError("cannot read scene '" + path + "': no OpenSceneGraph plugin could load it");
-    if (hasExtension(path, ".bsp"))
-    {
-        PolygonModeRemover remover;
-        model->accept(remover);
-        if (remover.removed)
-            std::cerr << "scene '" << path << "': removed the wireframe PolygonMode OSG's bsp plugin put on "
-                      << remover.removed << " faces\n";
-    }
+    if (const unsigned removed = repairLoadedModel(*model, path))
+        std::cerr << "scene '" << path << "': removed the wireframe PolygonMode OSG's bsp plugin put on " << removed
+                  << " faces\n";
     return model;
 }
 

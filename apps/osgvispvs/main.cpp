@@ -6,6 +6,7 @@
 #include "BakeSummary.h"
 #include "PvsToolOptions.h"
 
+#include <osgVis/ModelRepair>
 #include <osgVis/SceneExtractor>
 #include <osgVis/Version>
 #include <osgVis/core/pvs/PvsFormat.h>
@@ -70,6 +71,10 @@ int bake(const PvsToolOptions& o)
     if (!model)
         throw ToolError("cannot read model '" + o.modelFile +
                         "' (not a model osgDB can read, or no plugin for its extension)");
+    // The same repairs as the .pvs plugin and the apps make, so the bake sees the drawn scene.
+    if (const unsigned repaired = osgVis::repairLoadedModel(*model, o.modelFile))
+        std::cerr << "model '" << o.modelFile << "': removed the wireframe PolygonMode OSG's bsp plugin put on "
+                  << repaired << " faces\n";
     osgVis::ExtractionOptions extraction;
     extraction.keepTriangles = true; // the subdivision splits along the model's opaque faces
     const osg::ref_ptr<osgVis::ExtractedScene> extracted = osgVis::extractScene(*model, extraction);

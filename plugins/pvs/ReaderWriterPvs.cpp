@@ -15,6 +15,7 @@
 #include "PvsModelFiles.h"
 #include "PvsTrust.h"
 
+#include <osgVis/ModelRepair>
 #include <osgVis/SceneExtractor>
 #include <osgVis/core/cellportal/CellPortalModule.h>
 #include <osgVis/core/pvs/PvsFormat.h>
@@ -59,6 +60,7 @@ osgDB::ReaderWriter::ReadResult showCorruptWithModelBeside(const std::string& pv
     if (!model)
         return osgDB::ReaderWriter::ReadResult("osgVis: " + pvsFile + " is corrupt (" + reason +
                                                ") and the model beside it, " + modelFile + ", cannot be read");
+    repairLoadedModel(*model, modelFile);
     OSG_WARN << "osgVis: " << pvsFile << " is corrupt (" << reason << "); showing " << modelFile
              << " with frustum culling only" << std::endl;
     return makeUntrustedGroup(*model, osgDB::getSimpleFileName(pvsFile), "corrupt .pvs: " + reason);
@@ -78,6 +80,7 @@ osgDB::ReaderWriter::ReadResult showWithModel(core::PvsFile&& pvs, const std::st
     osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(modelFile, options);
     if (!model)
         return osgDB::ReaderWriter::ReadResult("osgVis: cannot read model '" + modelFile + "' named by " + pvsFile);
+    repairLoadedModel(*model, modelFile); // as osgvispvs did before baking
     const std::string name = osgDB::getSimpleFileName(pvsFile);
     const std::string mismatch = mismatchWithModel(pvs.data, *model);
     if (!mismatch.empty())
