@@ -307,14 +307,14 @@ TEST(OccluderBuilder, CornerSplitDifferentlyOnEachSideLinksOnlyAfterTJunctionRep
     Scene scene;
     addObject(scene, tessellatedRectangle(Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(0, 0, 3), 3));
     addObject(scene, tessellatedRectangle(Vec3(4, 0, 0), Vec3(0, 4, 0), Vec3(0, 0, 3), 5));
-    OccluderBuildOptions unrepaired;
-    unrepaired.repairTJunctions = false;
-    const auto apart = buildOccluderPolygons(scene, unrepaired);
+    const auto apart = buildOccluderPolygons(scene); // by default: the drawn faces keep their cracks
     ASSERT_EQ(apart.size(), 2u);
     EXPECT_EQ(linkedEdges(apart[0]), 0u);
     EXPECT_EQ(linkedEdges(apart[1]), 0u);
 
-    const auto polygons = buildOccluderPolygons(scene);
+    OccluderBuildOptions repaired;
+    repaired.repairTJunctions = true;
+    const auto polygons = buildOccluderPolygons(scene, repaired);
     ASSERT_EQ(polygons.size(), 2u);
     expectWellFormed(polygons);
     EXPECT_EQ(linkedEdges(polygons[0]), 1u);
@@ -326,24 +326,21 @@ TEST(OccluderBuilder, CornerSplitDifferentlyOnEachSideLinksOnlyAfterTJunctionRep
 
 TEST(OccluderBuilder, TJunctionRepairLinksHalfAnEdge)
 {
-    // B's edge (0,0)–(1,0) covers half of A's edge (0,0)–(2,0): A gets B's corner (1,0) on that
-    // edge and the halves link. Coplanar, the two also give the pieces of their union.
+    // B's edge (0,0)–(1,0) covers half of A's edge (0,0)–(2,0): repaired, A gets B's corner (1,0)
+    // on that edge and the halves link.
     for (const bool coplanar : {true, false})
     {
         Scene scene;
         addObject(scene, {{Vec3f(0, 0, 0), Vec3f(2, 0, 0), Vec3f(1, 2, 0)}});
         const Vec3f apex = coplanar ? Vec3f(0.5f, -1, 0) : Vec3f(0.5f, 0, -1);
         addObject(scene, {{Vec3f(1, 0, 0), Vec3f(0, 0, 0), apex}});
-        OccluderBuildOptions plain;
-        plain.repairTJunctions = false;
-        plain.planarUnions = false;
-        const auto apart = buildOccluderPolygons(scene, plain);
+        const auto apart = buildOccluderPolygons(scene);
         ASSERT_EQ(apart.size(), 2u);
         for (const OccluderPolygon& p : apart)
             EXPECT_EQ(linkedEdges(p), 0u);
 
         OccluderBuildOptions repaired;
-        repaired.planarUnions = false;
+        repaired.repairTJunctions = true;
         const auto polygons = buildOccluderPolygons(scene, repaired);
         ASSERT_EQ(polygons.size(), 2u);
         expectWellFormed(polygons);
@@ -629,7 +626,10 @@ TEST(OccluderBuilder, AWallOfSeveralObjectsAlsoHidesAsOnePolygonNamingThemAll)
     addObject(scene, square(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 0, 1)));
     addObject(scene, square(Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(1, 0, 0))); // wound the other way
     addObject(scene, square(Vec3(1, 0, 1), Vec3(1, 0, 0), Vec3(0, 0, 1)));
-    const auto polygons = buildOccluderPolygons(scene);
+    EXPECT_TRUE(unionsOf(buildOccluderPolygons(scene)).empty()) << "off by default";
+    OccluderBuildOptions united;
+    united.planarUnions = true;
+    const auto polygons = buildOccluderPolygons(scene, united);
     expectWellFormed(polygons);
     const auto unions = unionsOf(polygons);
     ASSERT_EQ(unions.size(), 1u);
@@ -644,9 +644,6 @@ TEST(OccluderBuilder, AWallOfSeveralObjectsAlsoHidesAsOnePolygonNamingThemAll)
     EXPECT_EQ(unions[0]->owner, 0u);
     EXPECT_EQ(polygons.size(), 4u) << "the faces stay, with their links";
 
-    OccluderBuildOptions off;
-    off.planarUnions = false;
-    EXPECT_TRUE(unionsOf(buildOccluderPolygons(scene, off)).empty());
 }
 
 TEST(OccluderBuilder, OnlyFacesInOnePlaneFacingAlikeUnite)
@@ -659,7 +656,9 @@ TEST(OccluderBuilder, OnlyFacesInOnePlaneFacingAlikeUnite)
                   flipB ? square(Vec3(1, 0, offset), Vec3(0, 1, 0), Vec3(1, 0, 0))
                         : square(Vec3(1, 0, offset), Vec3(1, 0, 0), Vec3(0, 1, 0)),
                   flagsB);
-        return unionsOf(buildOccluderPolygons(scene)).size();
+        OccluderBuildOptions united;
+        united.planarUnions = true;
+        return unionsOf(buildOccluderPolygons(scene, united)).size();
     };
     EXPECT_EQ(unionCount(0.0f, OBJECT_NONE, OBJECT_NONE, false), 1u);
     EXPECT_EQ(unionCount(0.0f, OBJECT_NONE, OBJECT_NONE, true), 1u) << "two-sided: either winding";

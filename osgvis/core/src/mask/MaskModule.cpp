@@ -60,16 +60,6 @@ Vec3 viewDirection(const View& view)
     return glm::normalize(Vec3(inverse * Vec4(0.0, 0.0, -1.0, 0.0)));
 }
 
-// The mask fuses occluders in image space already: the extra union pieces cost rasterization and
-// measured no gain on the real levels (tests/bench/results/real-levels/README.md), so it goes
-// without them.
-OccluderBuildOptions maskOccluderBuild()
-{
-    OccluderBuildOptions options;
-    options.planarUnions = false;
-    return options;
-}
-
 // Polygons of a few objects (inserted during the walk), built on a scene of just those objects,
 // then renumbered into the module's polygon list.
 void appendObjectPolygons(const Scene& scene, const std::vector<ObjectId>& ids, const OccluderBuildOptions& options,
@@ -203,7 +193,7 @@ void MaskModule::setScene(const Scene& scene)
     Impl& m = *_impl;
     const std::vector<SceneObject>& objects = scene.objects;
     m.scene = &scene;
-    m.polygons = buildOccluderPolygons(scene, maskOccluderBuild());
+    m.polygons = buildOccluderPolygons(scene);
     m.polygonsOf.assign(objects.size(), {});
     m.statedPolygons.clear();
     for (std::uint32_t i = 0; i < m.polygons.size(); ++i)
@@ -327,7 +317,7 @@ void MaskModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange
         if (!newStatic.empty())
         {
             const std::size_t before = m.polygons.size();
-            appendObjectPolygons(scene, newStatic, maskOccluderBuild(), m.polygons);
+            appendObjectPolygons(scene, newStatic, OccluderBuildOptions(), m.polygons);
             for (std::size_t i = before; i < m.polygons.size(); ++i)
                 m.addToOwners(static_cast<std::uint32_t>(i));
             m.selectedIn.resize(m.polygons.size(), 0);

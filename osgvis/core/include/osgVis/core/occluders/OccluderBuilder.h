@@ -25,10 +25,14 @@ struct OccluderBuildOptions
     /// Coplanar faces of different objects, and overlapping coplanar faces of one, also give the
     /// convex pieces of their union as polygons of their own (docs/occluders.md): a wall of many
     /// faces hides as one. Such a polygon names its objects in OccluderPolygon::parts; the faces
-    /// stay as they were.
-    bool planarUnions = true;
-    /// A vertex lying on another polygon's edge splits that edge, so both share it (links).
-    bool repairTJunctions = true;
+    /// stay as they were. Off by default: a union also spans faces that only abut along a
+    /// T-junction, where the renderer's rasterization leaves pixel cracks that show what is behind
+    /// (measured: one object seen through one pixel on OpenArena's oa_dm4). Turn it on only for
+    /// models whose drawn faces are watertight.
+    bool planarUnions = false;
+    /// A vertex lying on another polygon's edge splits that edge, so both share it (links). Off by
+    /// default for the same reason: the drawn faces keep their T-junction and its cracks.
+    bool repairTJunctions = false;
     /// Use the triangles of every eligible object (static, opaque, not OBJECT_NO_AUTO_OCCLUDER), not
     /// only OBJECT_OCCLUDER objects and the scene's stated occluder polygons.
     bool sceneGeometry = true;
