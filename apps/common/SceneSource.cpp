@@ -2,6 +2,7 @@
 #include "SceneSource.h"
 
 #include "OrbitWalk.h"
+#include "Q3PvsMode.h"
 #include "FreeSpaceWalk.h"
 
 #include <osgVis/ModelRepair>
@@ -36,9 +37,8 @@ osg::ref_ptr<osg::Node> readModel(const std::string& path)
     osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(path);
     if (!model)
         throw SceneError("cannot read scene '" + path + "': no OpenSceneGraph plugin could load it");
-    if (const unsigned removed = repairLoadedModel(*model, path))
-        std::cerr << "scene '" << path << "': removed the wireframe PolygonMode OSG's bsp plugin put on " << removed
-                  << " faces\n";
+    if (const std::string repaired = repairLoadedModel(*model, path); !repaired.empty())
+        std::cerr << "scene '" << path << "': " << repaired << "\n";
     return model;
 }
 
@@ -205,6 +205,10 @@ LoadedScene loadScene(const SceneRequest& options)
     result.objects = extractScene(*result.model, ExtractionOptions{false});
     if (result.objects->scene.objects.empty())
         throw SceneError("scene '" + result.name + "' has no drawables: nothing to walk through");
+    // A Quake 3 level carries its own cells: the mode q3-pvs-approx culls by them.
+    if (options.generateKind.empty() && hasExtension(options.scenePath, ".bsp"))
+        std::cerr << "scene '" << result.name << "': " << attachQ3Pvs(options.scenePath, *result.model, *result.objects)
+                  << std::endl;
 
     std::string walkPath = options.walkPath;
     bool walkChosenForUser = false; // the automatic walk may then fall back to an orbit

@@ -14,6 +14,7 @@
 #include <SceneSource.h>
 
 #include <PluginPaths.h>
+#include <Q3PvsMode.h>
 
 #include <exception>
 #include <filesystem>
@@ -81,6 +82,7 @@ int reportThreadingFailures(const BenchReport& report)
 int main(int argc, char** argv)
 {
     osgVis::apps::addOsgVisPluginPaths(); // .pvs and .gltf/.glb load from the build tree and after install
+    osgVis::apps::registerQ3PvsMode();   // a Quake 3 level's own cells (the mode keeps everything elsewhere)
     BenchOptions options;
     std::vector<BenchMode> modes;
     try

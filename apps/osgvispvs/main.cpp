@@ -72,9 +72,8 @@ int bake(const PvsToolOptions& o)
         throw ToolError("cannot read model '" + o.modelFile +
                         "' (not a model osgDB can read, or no plugin for its extension)");
     // The same repairs as the .pvs plugin and the apps make, so the bake sees the drawn scene.
-    if (const unsigned repaired = osgVis::repairLoadedModel(*model, o.modelFile))
-        std::cerr << "model '" << o.modelFile << "': removed the wireframe PolygonMode OSG's bsp plugin put on "
-                  << repaired << " faces\n";
+    if (const std::string repaired = osgVis::repairLoadedModel(*model, o.modelFile); !repaired.empty())
+        std::cerr << "model '" << o.modelFile << "': " << repaired << "\n";
     osgVis::ExtractionOptions extraction;
     extraction.keepTriangles = true; // the subdivision splits along the model's opaque faces
     const osg::ref_ptr<osgVis::ExtractedScene> extracted = osgVis::extractScene(*model, extraction);

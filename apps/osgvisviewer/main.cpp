@@ -7,6 +7,7 @@
 #include <SceneSource.h>
 
 #include <PluginPaths.h>
+#include <Q3PvsMode.h>
 
 #include <osgVis/core/api/ModuleRegistry.h>
 
@@ -26,6 +27,9 @@ int main(int argc, char** argv)
             std::cout << usageText(program);
             return 0;
         }
+        // A Quake 3 level brings its own cells: its mode joins the cycle (SceneSource files them).
+        if (options.scenePath.size() > 4 && options.scenePath.compare(options.scenePath.size() - 4, 4, ".bsp") == 0)
+            osgVis::apps::registerQ3PvsMode();
         checkMode(options.mode);
     }
     catch (const OptionsError& e)
