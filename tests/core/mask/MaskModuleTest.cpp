@@ -303,6 +303,28 @@ TEST(MaskModule, CullsTheBlockBehindTheStreetFront)
     }
 }
 
+TEST(MaskModule, PolygonBudgetBoundsWhatIsRasterized)
+{
+    // The street view again, with room for only the few largest polygons: fewer are rasterized,
+    // and what is culled is still hidden.
+    const City city = makeCity();
+    const View view = lookFrom({85.0, -8.0, 1.7}, {0, 1, 0}, 0.0, 160, 120, perspective(160.0 / 120.0));
+    MaskModule defaults, bounded([] {
+        MaskOptions options;
+        options.maxOccluderPolygons = 3;
+        return options;
+    }());
+    defaults.setScene(city.scene);
+    bounded.setScene(city.scene);
+    const VisibleSet all = cullAndCheck("default budget", defaults, city.scene, view);
+    const VisibleSet few = cullAndCheck("budget 3", bounded, city.scene, view);
+    EXPECT_GT(defaults.lastStatistics().occluderPolygons, 3u);
+    EXPECT_LE(bounded.lastStatistics().occluderPolygons, 3u);
+    EXPECT_GT(bounded.lastStatistics().occluderPolygons, 0u);
+    EXPECT_GE(few.count(), all.count());
+    EXPECT_LT(few.count(), city.scene.objects.size()) << "the largest three still hide something";
+}
+
 // ---- the δ-ball -----------------------------------------------------------------------------
 
 // A wall whose corner projects to window position `corner` from the critical eye (looking along +y,

@@ -7,6 +7,7 @@
 
 #include <osgVis/core/mask/MaskRasterizer.h>
 #include <osgVis/core/occluders/OccluderBuilder.h>
+#include <osgVis/core/occluders/OccluderSelector.h>
 
 #include <algorithm>
 #include <chrono>
@@ -58,6 +59,24 @@ Vec3 viewDirection(const View& view)
 {
     const Mat4 inverse = glm::inverse(view.viewMatrix);
     return glm::normalize(Vec3(inverse * Vec4(0.0, 0.0, -1.0, 0.0)));
+}
+
+// The polygon budget: the `budget` largest of `selected` by area-angle from `eye` (ties by index),
+// in ascending index order so the groups come out the same every run.
+void keepLargestPolygons(const std::vector<OccluderPolygon>& polygons, const Vec3& eye, std::uint32_t budget,
+                         std::vector<std::uint32_t>& selected)
+{
+    if (budget == 0 || selected.size() <= budget)
+        return;
+    std::vector<std::pair<double, std::uint32_t>> ranked;
+    ranked.reserve(selected.size());
+    for (std::uint32_t p : selected)
+        ranked.push_back({-areaAngle(polygons[p], eye), p});
+    std::nth_element(ranked.begin(), ranked.begin() + budget, ranked.end());
+    selected.clear();
+    for (std::size_t i = 0; i < budget; ++i)
+        selected.push_back(ranked[i].second);
+    std::sort(selected.begin(), selected.end());
 }
 
 // Polygons of a few objects (inserted during the walk), built on a scene of just those objects,
@@ -450,6 +469,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
             }
         std::sort(restingOn.begin(), restingOn.end());
         restingOn.erase(std::unique(restingOn.begin(), restingOn.end()), restingOn.end());
+        keepLargestPolygons(m.polygons, eye, _options.maxOccluderPolygons, selected);
         stats.selectMs = millisecondsSince(start);
 
         start = Clock::now();

@@ -42,6 +42,10 @@ struct MaskOptions
     double shrinkPixels = 2.0;        ///< Δ, in frame pixels (the viewport's)
     std::uint32_t maskDownscale = 4;  ///< mask = viewport / this (rounded up), at least 16×16
     std::uint32_t occluders = 64;     ///< R: occluder objects per critical frame
+    /// At most this many of their polygons are rasterized, the largest by area-angle from the eye
+    /// (0: all): R objects of a finely tessellated level (curved patches) bring thousands, and
+    /// the rasterization cost with them. Fewer occluders only cull less.
+    std::uint32_t maxOccluderPolygons = 512;
     double minOccluderDistance = 0.0; ///< D: occluders nearer than this to the eye are not used (world
                                       // units; the near plane's reach is always added)
     double maxEyeSpeed = 15.0;        ///< V, world units per second of walk time
