@@ -5,6 +5,7 @@
 // every object the rays see along it.
 #include "BoxScenes.h"
 #include "RayCastVisibility.h"
+#include "RegionSampling.h"
 
 #include <osgVis/core/async/AsyncVisibility.h>
 #include <osgVis/core/api/ModuleRegistry.h>
@@ -23,39 +24,6 @@ using namespace osgVis::test;
 
 namespace
 {
-constexpr double Near = 0.1;
-
-Mat4 perspective(double fovyDegrees, double aspect)
-{
-    return glm::perspective(glm::radians(fovyDegrees), aspect, Near, 1000.0);
-}
-
-View lookFrom(const Vec3& eye, const Vec3& direction, const Vec3& up, double fovy = 60.0, std::uint32_t width = 96,
-              std::uint32_t height = 72)
-{
-    return makeView(glm::lookAt(eye, eye + direction, up), perspective(fovy, double(width) / height), 0.0, width,
-                    height);
-}
-
-// The six 90° cube faces around `eye`: together they see every direction.
-std::vector<View> cubeFaces(const Vec3& eye)
-{
-    const Vec3 directions[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    std::vector<View> views;
-    for (const Vec3& d : directions)
-        views.push_back(lookFrom(eye, d, std::abs(d.z) > 0.5 ? Vec3(0, 1, 0) : Vec3(0, 0, 1), 90.0, 64, 64));
-    return views;
-}
-
-ViewRegion regionAround(const Vec3& center, const Vec3& halfExtent)
-{
-    ViewRegion region;
-    region.eyes = Aabb(center - halfExtent, center + halfExtent);
-    region.minNearDistance = 0.5 * Near;
-    region.maxNearReach = 2.0 * Near * std::sqrt(3.0); // a 90° square view's reach is √3·near
-    return region;
-}
-
 // A fresh chain's answer for a region (ViewRegion) or a single view (View).
 template <class Query> VisibleSet chainAnswer(const std::string& modes, const Scene& scene, const Query& query)
 {
@@ -74,32 +42,6 @@ VisibleSet regionAnswer(const std::string& modes, const Scene& scene, const View
     return chainAnswer(modes, scene, region);
 }
 
-// Objects seen from eyes of the region (its corners, centre and random points) that the answer lacks.
-std::string missedFromRegion(const RayCastVisibility& rays, const Scene& scene, const ViewRegion& region,
-                             const VisibleSet& answer, int randomEyes = 4)
-{
-    std::mt19937 random(7);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    std::vector<Vec3> eyes{region.center()};
-    for (int k = 0; k < 8; ++k)
-        eyes.push_back(region.center() + Vec3((k & 1) ? 1.0 : -1.0, (k & 2) ? 1.0 : -1.0, (k & 4) ? 1.0 : -1.0) *
-                                             region.halfExtent() * 0.999);
-    for (int k = 0; k < randomEyes; ++k)
-        eyes.push_back(region.center() + Vec3(unit(random), unit(random), unit(random)) * region.halfExtent());
-    std::ostringstream missed;
-    RayCastOptions options;
-    options.samplesPerAxis = 2;
-    for (const Vec3& eye : eyes)
-        for (const View& face : cubeFaces(eye))
-        {
-            EXPECT_TRUE(region.holds(face));
-            const RayCastResult seen = rays.cast(face, options);
-            for (ObjectId id : seen.ids())
-                if (!answer.test(id))
-                    missed << scene.objects[id].name << " from (" << eye.x << ", " << eye.y << ", " << eye.z << ")\n";
-        }
-    return missed.str();
-}
 } // namespace
 
 TEST(RegionQueries, ChainsAnswerRegionsOnlyWhenEveryStageDoes)
@@ -134,7 +76,7 @@ TEST(RegionQueries, AWallHidesWhatIsBehindItOnlyFromRegionsWhollyInFront)
     addBox(scene, {-10, 10, 0}, {10, 11, 10}, "wall");
     const ObjectId behind = addBox(scene, {-1, 20, 0}, {1, 22, 2}, "crate behind");
     const ObjectId before = addBox(scene, {-1, 4, 0}, {1, 5, 1}, "crate before");
-    for (const std::string modes : {"octree", "frustum+octree", "octree-single"})
+    for (const std::string modes : {"octree", "frustum+octree", "octree-single", "multifocal"})
     {
         SCOPED_TRACE(modes);
         const VisibleSet small = regionAnswer(modes, scene, regionAround({0, 0, 1.7}, {2, 2, 0.5}));
@@ -158,7 +100,7 @@ TEST(RegionQueries, OctreeRegionsKeepEverythingTheRaysSeeFromAnyEyeInThem)
                                           regionAround({85, 55, 1.7}, {3, 3, 0.3}),
                                           regionAround({25, 85, 2.5}, {12, 2, 1})};
     for (const ViewRegion& region : regions)
-        for (const std::string modes : {"frustum+octree", "octree-single"})
+        for (const std::string modes : {"frustum+octree", "octree-single", "multifocal"})
             EXPECT_EQ(missedFromRegion(rays, city.scene, region, regionAnswer(modes, city.scene, region)), "")
                 << modes;
     // A region a few metres long does cull: the rays see 69 objects from it in every direction,

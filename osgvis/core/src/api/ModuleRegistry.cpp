@@ -4,6 +4,7 @@
 #include <osgVis/core/cellportal/CellPortalModule.h>
 #include <osgVis/core/frustum/FrustumModule.h>
 #include <osgVis/core/mask/MaskModule.h>
+#include <osgVis/core/multifocal/MultifocalModule.h>
 #include <osgVis/core/octree/OctreeModule.h>
 
 #include <map>
@@ -48,6 +49,7 @@ struct Registry
             approx.shrinkPixels = 4.0; // the paper's variant at the shrinkage its figures use
             return std::make_unique<MaskModule>(approx);
         };
+        factories["multifocal"] = [] { return std::make_unique<MultifocalModule>(); };
         factories["mask-distance"] = []
         {
             MaskOptions distance;

@@ -6,46 +6,6 @@
 
 namespace osgVis::core
 {
-double cross2(const Point2& o, const Point2& a, const Point2& b)
-{
-    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-}
-
-double signedArea(const Outline2& outline)
-{
-    double twice = 0.0;
-    for (std::size_t i = 0; i < outline.size(); ++i)
-    {
-        const Point2& a = outline[i];
-        const Point2& b = outline[(i + 1) % outline.size()];
-        twice += a.x * b.y - b.x * a.y;
-    }
-    return 0.5 * twice;
-}
-
-Outline2 convexIntersection(Outline2 subject, const Outline2& clip)
-{
-    Outline2 next;
-    for (std::size_t e = 0; e < clip.size() && !subject.empty(); ++e)
-    {
-        const Point2& a = clip[e];
-        const Point2& b = clip[(e + 1) % clip.size()];
-        next.clear();
-        for (std::size_t i = 0; i < subject.size(); ++i)
-        {
-            const Point2& p = subject[i];
-            const Point2& q = subject[(i + 1) % subject.size()];
-            const double sp = cross2(a, b, p), sq = cross2(a, b, q);
-            if (sp >= 0.0)
-                next.push_back(p);
-            if ((sp >= 0.0) != (sq >= 0.0))
-                next.push_back(p + (q - p) * (sp / (sp - sq)));
-        }
-        subject.swap(next);
-    }
-    return subject;
-}
-
 std::vector<std::size_t> convexHullIndices(const Outline2& points)
 {
     std::vector<std::size_t> order(points.size());

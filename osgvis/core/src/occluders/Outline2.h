@@ -1,23 +1,18 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Convex outlines in a plane's own 2-D coordinates, as the coplanar unions build them: signed
-// area, the intersection of two convex outlines, the convex hull, and whether two convex
-// outlines together are exactly their hull (so their union is one convex polygon).
-#include <osgVis/core/geometry/Math.h>
+// Convex outlines in a plane's own 2-D coordinates, as the coplanar unions build them: the convex
+// hull, and whether two convex outlines together are exactly their hull (so their union is one
+// convex polygon). Area and intersection are geometry/ConvexArea2's.
+#include <osgVis/core/geometry/ConvexArea2.h>
 
 #include <cstddef>
 #include <vector>
 
 namespace osgVis::core
 {
-using Point2 = glm::dvec2;
-using Outline2 = std::vector<Point2>; // counter-clockwise unless said otherwise
+using Point2 = Vec2;
+using Outline2 = ConvexArea2; // counter-clockwise unless said otherwise
 
-/// (a − o) × (b − o): positive when o → a → b turns left.
-double cross2(const Point2& o, const Point2& a, const Point2& b);
-double signedArea(const Outline2& outline);
-/// The part of convex `subject` inside convex `clip`.
-Outline2 convexIntersection(Outline2 subject, const Outline2& clip);
 /// Indices of `points` on their convex hull, counter-clockwise; collinear points are dropped.
 std::vector<std::size_t> convexHullIndices(const Outline2& points);
 /// Indices into a followed by b (b's offset by a.size()) of the hull of a ∪ b when that hull is

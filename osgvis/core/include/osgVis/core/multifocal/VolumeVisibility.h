@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// @file
+/// A potentially visible set for a *volume* of viewpoints, after Marsden & Guibas, "The multifocal
+/// z-buffer" (no cells, portals or stated occluders needed): everything visible from any point of
+/// an axial box V is kept. Correspondence planes parallel to V's faces carry multifocal z-buffers;
+/// the scene's own opaque polygons are occluders and occludees at once (§4.5); an object or
+/// triangle is culled only when one plane proves every ray from V to it blocked. Derivations and
+/// the placement rule: docs/multifocal.md.
+#include <osgVis/core/occluders/OccluderPolygon.h>
+#include <osgVis/core/scene/VisibleSet.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace osgVis::core
+{
+struct MultifocalOptions
+{
+    /// Pixels along the longer side of each plane's window (square pixels; the paper uses 100).
+    int planeResolution = 100;
+    /// Planes per face of V, at depths taken from the occluders beyond that face.
+    int planesPerDirection = 2;
+    /// A plane's window spans rays leaving V's face up to this angle from its normal (radians).
+    double maxWindowAngle = 1.0471975511965976; // 60°
+    /// Occluders whose area-angle seen from V's centre is below this are not inserted (distant).
+    double minAreaAngle = 1e-6;
+    /// At most this many occluders are inserted per plane (the best by area-angle).
+    std::uint32_t maxOccludersPerPlane = 50000;
+    /// No occluder nearer to V than this is used: a near plane at that distance could clip it.
+    double nearDistance = 0.0;
+    /// Test the triangles of objects whose bounds are not hidden: an object all of whose
+    /// triangles are hidden is culled, and the statistics count hidden triangles.
+    bool triangles = true;
+    /// Coverage-map pieces kept per pixel (the lowest goes beyond it).
+    std::uint32_t maxFragmentsPerPixel = 8;
+
+    /// The options as `key=value` pairs: what a `.pvs` file records, so that ranges baked with
+    /// other options are refused when merged.
+    std::string canonical() const;
+};
+
+struct VolumeStatistics
+{
+    std::uint32_t planes = 0;
+    std::uint64_t occludersInserted = 0;
+    std::uint64_t objectsCulled = 0;
+    std::uint64_t trianglesTested = 0;
+    std::uint64_t trianglesCulled = 0;     ///< hidden, in culled objects or on their own
+    std::uint64_t trianglesBackFacing = 0; ///< facing away from every point of V
+    std::uint64_t trianglesBackFacingNotCulled = 0;
+};
+
+struct VolumePvs
+{
+    VisibleSet objects;                        ///< capacity = object count: the PVS
+    std::vector<std::uint8_t> hiddenTriangles; ///< per Scene::triangles entry, 1 = culled; empty unless triangles
+    VolumeStatistics statistics;
+};
+
+/// The PVS of `volume` (non-empty, finite). `occluders` come from buildOccluderPolygons(scene) (or
+/// any subset); objects DYNAMIC or ALWAYS_VISIBLE are always kept. Deterministic: the answer
+/// depends only on the arguments. Throws std::invalid_argument for an empty or non-finite volume.
+VolumePvs computeVolumePvs(const Scene& scene, const std::vector<OccluderPolygon>& occluders, const Aabb& volume,
+                           const MultifocalOptions& options = {});
+} // namespace osgVis::core

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// Marsden & Guibas, "The multifocal z-buffer", §6: the PVS of a view volume used for every eye in
+// it (their first model, with cells made on demand instead of in a bake).
+#include <osgVis/core/multifocal/MultifocalModule.h>
+
+#include <osgVis/core/occluders/OccluderBuilder.h>
+
+#include <cmath>
+#include <list>
+#include <map>
+#include <tuple>
+
+namespace osgVis::core
+{
+namespace
+{
+using CellKey = std::tuple<long long, long long, long long>;
+
+struct CellAnswer
+{
+    VisibleSet objects;
+    double nearReach = 0.0; ///< the near-plane reach it assumed
+};
+} // namespace
+
+struct MultifocalModule::Impl
+{
+    MultifocalModuleOptions options;
+    std::vector<OccluderPolygon> occluders;
+    Vec3 cellSize{1.0};
+    std::list<CellKey> recent; ///< most recent first
+    std::map<CellKey, std::pair<CellAnswer, std::list<CellKey>::iterator>> cells;
+    std::size_t computed = 0;
+};
+
+MultifocalModule::MultifocalModule(const MultifocalModuleOptions& options) : _impl(std::make_unique<Impl>())
+{
+    _impl->options = options;
+}
+
+MultifocalModule::~MultifocalModule() = default;
+
+void MultifocalModule::setScene(const Scene& scene)
+{
+    _scene = &scene;
+    _impl->occluders = buildOccluderPolygons(scene);
+    _impl->cells.clear();
+    _impl->recent.clear();
+    const Aabb bounds = scene.bounds();
+    const double diagonal = bounds.empty() ? 1.0 : std::max(glm::length(bounds.extent()), 1e-6);
+    for (int a = 0; a < 3; ++a)
+        _impl->cellSize[a] = _impl->options.cellSize[a] > 0.0 ? _impl->options.cellSize[a] : diagonal / 100.0;
+}
+
+Aabb MultifocalModule::cellOf(const Vec3& eye) const
+{
+    const Vec3& size = _impl->cellSize;
+    const Vec3& origin = _impl->options.cellOrigin;
+    const Vec3 lo = origin + glm::floor((eye - origin) / size) * size;
+    return Aabb(lo, lo + size);
+}
+
+std::size_t MultifocalModule::cellsComputed() const
+{
+    return _impl->computed;
+}
+
+void MultifocalModule::cull(const View& view, VisibleSet& visible)
+{
+    if (!_scene || view.orthographic || !std::isfinite(view.eye.x + view.eye.y + view.eye.z))
+        return;
+    Impl& m = *_impl;
+    const Vec3 index = glm::floor((view.eye - m.options.cellOrigin) / m.cellSize);
+    const CellKey key{(long long)index.x, (long long)index.y, (long long)index.z};
+    const double reach = nearPlaneReach(view);
+    auto found = m.cells.find(key);
+    if (found != m.cells.end() && found->second.first.nearReach < reach)
+    {
+        m.recent.erase(found->second.second);
+        m.cells.erase(found);
+        found = m.cells.end();
+    }
+    if (found == m.cells.end())
+    {
+        MultifocalOptions volume = m.options.volume;
+        volume.nearDistance = std::max(volume.nearDistance, reach);
+        CellAnswer answer{computeVolumePvs(*_scene, m.occluders, cellOf(view.eye), volume).objects, volume.nearDistance};
+        ++m.computed;
+        if (m.cells.size() >= std::max<std::size_t>(1, m.options.cachedCells))
+        {
+            m.cells.erase(m.recent.back());
+            m.recent.pop_back();
+        }
+        m.recent.push_front(key);
+        found = m.cells.emplace(key, std::make_pair(std::move(answer), m.recent.begin())).first;
+    }
+    else if (found->second.second != m.recent.begin())
+        m.recent.splice(m.recent.begin(), m.recent, found->second.second);
+    visible.intersectWith(found->second.first.objects);
+}
+
+void MultifocalModule::cullRegion(const ViewRegion& region, VisibleSet& visible)
+{
+    const Vec3 lo = region.eyes.min, hi = region.eyes.max;
+    if (!_scene || region.eyes.empty() || !std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
+        return;
+    MultifocalOptions volume = _impl->options.volume;
+    volume.nearDistance = std::max(volume.nearDistance, region.maxNearReach);
+    visible.intersectWith(computeVolumePvs(*_scene, _impl->occluders, region.eyes, volume).objects);
+}
+} // namespace osgVis::core
