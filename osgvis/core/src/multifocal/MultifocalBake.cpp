@@ -2,8 +2,6 @@
 // Marsden & Guibas, "The multifocal z-buffer", §6: a PVS per view volume, baked ahead of time.
 #include <osgVis/core/multifocal/MultifocalBake.h>
 
-#include <osgVis/core/occluders/OccluderBuilder.h>
-
 #include <tbb/parallel_for.h>
 
 #include <cmath>
@@ -86,7 +84,7 @@ ViewCellBake bakeViewCells(const Scene& scene, const std::vector<Aabb>& cells, s
 {
     if (first > end || end > cells.size())
         throw std::invalid_argument("bakeViewCells: cell range out of bounds");
-    const std::vector<OccluderPolygon> occluders = buildOccluderPolygons(scene);
+    const std::vector<OccluderPolygon> occluders = volumeOccluders(scene);
     ViewCellBake bake;
     const std::size_t count = end - first;
     bake.pvs.resize(count);

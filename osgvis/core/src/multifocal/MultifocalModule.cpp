@@ -3,8 +3,6 @@
 // it (their first model, with cells made on demand instead of in a bake).
 #include <osgVis/core/multifocal/MultifocalModule.h>
 
-#include <osgVis/core/occluders/OccluderBuilder.h>
-
 #include <cmath>
 #include <list>
 #include <map>
@@ -43,7 +41,7 @@ MultifocalModule::~MultifocalModule() = default;
 void MultifocalModule::setScene(const Scene& scene)
 {
     _scene = &scene;
-    _impl->occluders = buildOccluderPolygons(scene);
+    _impl->occluders = volumeOccluders(scene);
     _impl->cells.clear();
     _impl->recent.clear();
     const Aabb bounds = scene.bounds();

@@ -9,6 +9,8 @@
 #include "PlanePlacement.h"
 
 #include <osgVis/core/geometry/ConvexPolygon.h>
+#include <osgVis/core/occluders/OccluderBuilder.h>
+#include <osgVis/core/occluders/SolidSections.h>
 
 #include <algorithm>
 #include <cmath>
@@ -64,7 +66,7 @@ bool planeClearOfVolume(const OccluderPolygon& polygon, const std::array<Vec3, 8
 
 /// The occluders usable on planes beyond `face`: clipped to the part beyond it, their plane clear
 /// of V, not nearer than the near distance, not distant; best area-angle first.
-std::vector<FaceOccluder> faceOccluders(const std::vector<OccluderPolygon>& occluders, const VolumeFace& face,
+std::vector<FaceOccluder> faceOccluders(const Scene& scene, const std::vector<OccluderPolygon>& occluders, const VolumeFace& face,
                                         const Aabb& volume, const std::array<Vec3, 8>& corners, double margin,
                                         const MultifocalOptions& options)
 {
@@ -74,9 +76,15 @@ std::vector<FaceOccluder> faceOccluders(const std::vector<OccluderPolygon>& occl
     // Keeps depth >= 2·margin: the clipped piece is real geometry, so it hides what it hides.
     const Plane beyond(normal, -face.direction * face.coordinate - 2.0 * margin);
     const Vec3 centre = volume.center();
+    const Aabb grown(volume.min - Vec3(margin), volume.max + Vec3(margin));
     for (const OccluderPolygon& polygon : occluders)
     {
         if (!planeClearOfVolume(polygon, corners, margin))
+            continue;
+        // A section inside a solid hides only from eyes outside it: sightlines from there reach
+        // it through the drawn surface.
+        if (polygon.insideSolid &&
+            (polygon.owner >= scene.objects.size() || scene.objects[polygon.owner].bounds.intersects(grown)))
             continue;
         const ConvexPolygon piece = ConvexPolygon(polygon.vertices).clipped(beyond);
         if (piece.size() < 3)
@@ -120,6 +128,14 @@ bool facesAwayFromVolume(const Triangle& t, const std::array<Vec3, 8>& corners)
     return true;
 }
 } // namespace
+
+std::vector<OccluderPolygon> volumeOccluders(const Scene& scene)
+{
+    std::vector<OccluderPolygon> occluders = buildOccluderPolygons(scene);
+    std::vector<OccluderPolygon> sections = convexSolidSections(scene);
+    occluders.insert(occluders.end(), std::make_move_iterator(sections.begin()), std::make_move_iterator(sections.end()));
+    return occluders;
+}
 
 VolumePvs computeVolumePvs(const Scene& scene, const std::vector<OccluderPolygon>& occluders, const Aabb& volume,
                            const MultifocalOptions& options)
@@ -168,7 +184,7 @@ VolumePvs computeVolumePvs(const Scene& scene, const std::vector<OccluderPolygon
             }
             if (candidates.empty())
                 continue;
-            const std::vector<FaceOccluder> usable = faceOccluders(occluders, face, volume, corners, margin, options);
+            const std::vector<FaceOccluder> usable = faceOccluders(scene, occluders, face, volume, corners, margin, options);
             if (usable.empty())
                 continue;
             std::vector<DepthSample> samples;

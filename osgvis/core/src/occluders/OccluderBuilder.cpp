@@ -4,6 +4,7 @@
 #include <osgVis/core/occluders/OccluderBuilder.h>
 
 #include "BoundaryLoop.h"
+#include "OccluderSources.h"
 #include "CoplanarMerger.h"
 #include "OccluderRegion.h"
 #include "VertexWelder.h"
@@ -21,32 +22,9 @@ namespace
 // More corners cost more per occlusion test than the extra area is worth.
 constexpr std::uint32_t MaxCorners = 32;
 
-bool isEligible(const SceneObject& object, bool sceneGeometry)
-{
-    const std::uint32_t flags = object.flags;
-    // Moving, see-through or unbounded geometry never hides anything reliably, stated or not.
-    if (flags & (OBJECT_DYNAMIC | OBJECT_TRANSPARENT | OBJECT_ALWAYS_VISIBLE))
-        return false;
-    if ((flags & OBJECT_CULL_BACK) && (flags & OBJECT_CULL_FRONT))
-        return false; // neither side is drawn
-    // A stated occluder is the modeller's word, so it needs no automatic eligibility.
-    if (flags & OBJECT_OCCLUDER)
-        return true;
-    return sceneGeometry && !(flags & OBJECT_NO_AUTO_OCCLUDER);
-}
-
 bool isFinite(const Vec3& v)
 {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-// Triangles [first, first + count) of an object, clipped to what the scene holds.
-std::pair<std::size_t, std::size_t> triangleRange(const Scene& scene, const SceneObject& object)
-{
-    const std::size_t first = std::min<std::size_t>(object.firstTriangle, scene.triangles.size());
-    const std::size_t end =
-        std::min<std::size_t>(std::size_t(object.firstTriangle) + object.triangleCount, scene.triangles.size());
-    return {first, std::max(first, end)};
 }
 
 struct ObjectTriangles

@@ -59,8 +59,13 @@ struct VolumePvs
     VolumeStatistics statistics;
 };
 
-/// The PVS of `volume` (non-empty, finite). `occluders` come from buildOccluderPolygons(scene) (or
-/// any subset); objects DYNAMIC or ALWAYS_VISIBLE are always kept. Deterministic: the answer
+/// The occluders a volume PVS uses: the scene's polygons (buildOccluderPolygons) and the sections
+/// through its closed convex objects (convexSolidSections).
+std::vector<OccluderPolygon> volumeOccluders(const Scene& scene);
+
+/// The PVS of `volume` (non-empty, finite). `occluders` come from volumeOccluders(scene) (or any
+/// subset); a section inside a solid is used only when V lies outside its object's bounds.
+/// Objects DYNAMIC or ALWAYS_VISIBLE are always kept. Deterministic: the answer
 /// depends only on the arguments. Throws std::invalid_argument for an empty or non-finite volume.
 VolumePvs computeVolumePvs(const Scene& scene, const std::vector<OccluderPolygon>& occluders, const Aabb& volume,
                            const MultifocalOptions& options = {});

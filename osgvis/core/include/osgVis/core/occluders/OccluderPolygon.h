@@ -29,5 +29,9 @@ struct OccluderPolygon
     /// of neighbouring objects); empty when it comes from `owner` alone. Such a polygon stands for
     /// all of them: it may occlude only while every one is static and drawn (or hidden).
     std::vector<ObjectId> parts;
+    /// A section through the inside of a closed solid object (convexSolidSections), not a drawn
+    /// face: it hides only from eyes outside that object's bounds, since a sightline from outside
+    /// reaches it only through the object's surface.
+    bool insideSolid = false;
 };
 } // namespace osgVis::core
