@@ -203,31 +203,58 @@ TEST(AsyncVisibility, PredictsASteadyWalkAndKeepsEverythingTheRaysSee)
 {
     const City city = makeCity();
     const RayCastVisibility rays(city.scene);
-    AsyncOptions options;
-    options.lookAheadFrames = 8;
-    AsyncVisibility async("frustum+octree", options);
-    async.setScene(shared(city.scene));
-    async.waitIdle();
-    std::ostringstream missed;
-    VisibleSet visible;
-    std::size_t answeredFrames = 0;
-    for (int frame = 0; frame < 60; ++frame)
+    // Octree regions along the predicted path; multifocal regions of a bake cell's size, answered
+    // in two passes (coarse, then full), each conservative.
+    for (const std::string modes : {"frustum+octree", "frustum+multifocal"})
     {
-        // 0.5 m per frame, looking about a little: the region is ahead of the eye, every direction.
-        const View view = streetView(-5.0 + 0.5 * frame, 15.0 * std::sin(0.2 * frame));
-        if (async.cull(view, visible))
+        SCOPED_TRACE(modes);
+        AsyncOptions options;
+        options.lookAheadFrames = 8;
+        if (modes == "frustum+multifocal")
+            options.regionSize = Vec3(4, 4, 2);
+        AsyncVisibility async(modes, options);
+        async.setScene(shared(city.scene));
+        async.waitIdle();
+        std::ostringstream missed;
+        VisibleSet visible;
+        std::size_t answeredFrames = 0;
+        for (int frame = 0; frame < 60; ++frame)
         {
-            ++answeredFrames;
-            for (ObjectId id : rays.cast(view).ids())
-                if (!visible.test(id))
-                    missed << "frame " << frame << ": " << city.scene.objects[id].name << "\n";
+            // 0.5 m per frame, looking about a little: the region is ahead of the eye, every direction.
+            const View view = streetView(-5.0 + 0.5 * frame, 15.0 * std::sin(0.2 * frame));
+            if (async.cull(view, visible))
+            {
+                ++answeredFrames;
+                for (ObjectId id : rays.cast(view).ids())
+                    if (!visible.test(id))
+                        missed << "frame " << frame << ": " << city.scene.objects[id].name << "\n";
+            }
+            async.waitIdle(); // a worker as fast as the frames
         }
-        async.waitIdle(); // a worker as fast as the frames
+        EXPECT_EQ(missed.str(), "");
+        // Only the first frame (no step seen yet) and the second (the first region had no path) miss.
+        EXPECT_GE(answeredFrames, 57u);
+        const AsyncStatistics statistics = async.statistics();
+        EXPECT_LT(statistics.regionsComputed, 20u) << "a region serves several frames";
+        EXPECT_EQ(statistics.refinedAnswers, modes == "frustum+multifocal" ? statistics.regionsComputed : 0u);
     }
-    EXPECT_EQ(missed.str(), "");
-    // Only the first frame (no step seen yet) and the second (the first region had no path) miss.
-    EXPECT_GE(answeredFrames, 57u);
-    EXPECT_LT(async.statistics().regionsComputed, 20u) << "a region serves several frames";
+}
+
+TEST(AsyncVisibility, ARegionSizeMakesRegionsAtLeastThatLarge)
+{
+    const City city = makeCity();
+    AsyncOptions options;
+    options.regionSize = Vec3(4, 4, 2);
+    AsyncVisibility async("frustum+multifocal", options);
+    async.setScene(shared(city.scene));
+    VisibleSet visible;
+    async.cull(streetView(10.0), visible);
+    async.waitIdle();
+    // The eye stands still: the region is the 4 × 4 × 2 box around it, so a step of 1.5 m stays in
+    // it (without a size the region would be the eye's point grown by the slack).
+    ASSERT_TRUE(async.cull(streetView(10.0), visible));
+    async.waitIdle();
+    EXPECT_TRUE(async.cull(streetView(11.5), visible));
 }
 
 TEST(AsyncVisibility, ANewSceneDropsEveryRegionOfTheOldOne)

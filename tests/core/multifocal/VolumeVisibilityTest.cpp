@@ -128,3 +128,20 @@ TEST(MultifocalModule, AViewTakesItsCellsPvsAndKeepsItWhileTheEyeStaysInTheCell)
                 ortho);
     EXPECT_EQ(ortho.count(), city.scene.objects.size());
 }
+
+TEST(MultifocalModule, EachPassOfARegionAnswerKeepsEverythingTheRaysSee)
+{
+    const City city = makeCity();
+    const RayCastVisibility rays(city.scene);
+    MultifocalModule module;
+    module.setScene(city.scene);
+    ASSERT_EQ(module.regionPasses(), 2u);
+    for (const ViewRegion& region : {regionAround({85, 10, 1.7}, {2, 2, 1}), regionAround({55, 85, 1.7}, {2, 2, 1})})
+        for (std::uint32_t pass = 0; pass < 2; ++pass)
+        {
+            VisibleSet answer(city.scene.objects.size(), true);
+            module.cullRegionPass(region, answer, pass);
+            EXPECT_EQ(missedFromRegion(rays, city.scene, region, answer), "") << "pass " << pass;
+            EXPECT_LT(answer.count(), city.scene.objects.size()) << "pass " << pass;
+        }
+}

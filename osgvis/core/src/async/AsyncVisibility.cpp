@@ -78,6 +78,12 @@ ViewRegion AsyncVisibility::regionAhead(const View& view) const
     const Vec3 grow(_slack + 0.25 * std::min(glm::length(_step), _maxPath));
     ViewRegion region;
     region.eyes = Aabb(glm::min(view.eye, view.eye + path) - grow, glm::max(view.eye, view.eye + path) + grow);
+    const Vec3& size = _options.regionSize;
+    if (size.x > 0.0 && size.y > 0.0 && size.z > 0.0)
+    {
+        const Vec3 centre = view.eye + 0.5 * path;
+        region.eyes.expand(Aabb(centre - 0.5 * size, centre + 0.5 * size));
+    }
     region.minNearDistance = NearDistanceFactor * nearDistance(view);
     region.maxNearReach = NearReachFactor * nearPlaneReach(view);
     return region;
@@ -183,21 +189,44 @@ void AsyncVisibility::run()
         }
         lock.unlock();
         const Clock::time_point start = Clock::now();
-        _chain.cullRegion(next.region, scratch);
-        auto answer = std::make_shared<Answer>();
-        answer->region = next.region;
-        answer->scene = next.scene;
-        answer->objects = scratch.ids();
-        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        lock.lock();
+        const std::uint32_t passes = _chain.regionPasses();
+        for (std::uint32_t pass = 0; pass < passes; ++pass)
+        {
+            _chain.cullRegionPass(next.region, scratch, pass);
+            auto answer = std::make_shared<Answer>();
+            answer->region = next.region;
+            answer->scene = next.scene;
+            answer->objects = scratch.ids();
+            const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+            lock.lock();
+            if (pass == 0)
+            {
+                _statistics.regionsComputed++;
+                _statistics.lastFirstPassMs = ms;
+            }
+            _statistics.lastRegionMs = ms;
+            _statistics.lastRegionObjects = answer->objects.size();
+            // A later pass replaces the earlier answer of its region; a scene job queued meanwhile
+            // makes this answer useless, and the cull side ignores it anyway.
+            const auto sameRegion = std::find_if(_answers.begin(), _answers.end(),
+                                                 [&](const std::shared_ptr<const Answer>& a)
+                                                 { return pass > 0 && a->scene == answer->scene && a->region.eyes.min == answer->region.eyes.min &&
+                                                          a->region.eyes.max == answer->region.eyes.max; });
+            if (sameRegion != _answers.end())
+            {
+                _answers.erase(sameRegion);
+                _statistics.refinedAnswers++;
+            }
+            _answers.insert(_answers.begin(), std::move(answer));
+            if (_answers.size() > KeptAnswers)
+                _answers.resize(KeptAnswers);
+            // A newer request or scene wins over refining this region further.
+            const bool interrupted = _stop || _pending || !_sceneJobs.empty();
+            if (interrupted || pass + 1 == passes)
+                break;
+            lock.unlock();
+        }
         _busy = false;
-        _statistics.regionsComputed++;
-        _statistics.lastRegionMs = ms;
-        _statistics.lastRegionObjects = answer->objects.size();
-        // A scene job queued meanwhile makes this answer useless; the cull side ignores it anyway.
-        _answers.insert(_answers.begin(), std::move(answer));
-        if (_answers.size() > KeptAnswers)
-            _answers.resize(KeptAnswers);
     }
 }
 } // namespace osgVis::core

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/core/module/ModuleChain.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace osgVis::core
@@ -137,5 +138,23 @@ bool ModuleChain::supportsRegions() const
 void ModuleChain::cullRegion(const ViewRegion& region, VisibleSet& visible)
 {
     runStages(visible, [&](VisibilityModule& module) { module.cullRegion(region, visible); });
+}
+
+std::uint32_t ModuleChain::regionPasses() const
+{
+    std::uint32_t passes = 1;
+    for (const auto& m : _modules)
+        passes = std::max(passes, m->regionPasses());
+    return passes;
+}
+
+void ModuleChain::cullRegionPass(const ViewRegion& region, VisibleSet& visible, std::uint32_t pass)
+{
+    runStages(visible,
+              [&](VisibilityModule& module)
+              {
+                  const std::uint32_t last = std::max<std::uint32_t>(module.regionPasses(), 1) - 1;
+                  module.cullRegionPass(region, visible, std::min(pass, last));
+              });
 }
 } // namespace osgVis::core

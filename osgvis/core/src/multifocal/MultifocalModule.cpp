@@ -99,11 +99,23 @@ void MultifocalModule::cull(const View& view, VisibleSet& visible)
 
 void MultifocalModule::cullRegion(const ViewRegion& region, VisibleSet& visible)
 {
+    cullRegionPass(region, visible, regionPasses() - 1);
+}
+
+void MultifocalModule::cullRegionPass(const ViewRegion& region, VisibleSet& visible, std::uint32_t pass)
+{
     const Vec3 lo = region.eyes.min, hi = region.eyes.max;
     if (!_scene || region.eyes.empty() || !std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
         return;
     MultifocalOptions volume = _impl->options.volume;
     volume.nearDistance = std::max(volume.nearDistance, region.maxNearReach);
+    if (pass == 0)
+    {
+        volume.planeResolution = std::min(volume.planeResolution, 32);
+        volume.planesPerDirection = 1;
+        volume.triangles = false;
+        volume.maxOccludersPerPlane = std::min<std::uint32_t>(volume.maxOccludersPerPlane, 2000);
+    }
     visible.intersectWith(computeVolumePvs(*_scene, _impl->occluders, region.eyes, volume).objects);
 }
 } // namespace osgVis::core

@@ -7,7 +7,10 @@
 /// as the eye stays inside the region. It predicts the eye from its last step and asks for the next
 /// region while the current one still holds, so the answer is usually ready before the eye gets
 /// there. When no region holds a view (a turn the prediction missed, a jump, a new scene) cull()
-/// says so and the caller culls that frame itself: a stale answer is never used.
+/// says so and the caller culls that frame itself: a stale answer is never used. A chain with
+/// progressive region answers (VisibilityModule::regionPasses) publishes each pass as it finishes,
+/// so the cull thread has a first answer early and uses the best finished one; a new request stops
+/// the refinement of the old region.
 ///
 /// Threads: one worker per object. cull(), setScene() and sceneReplaced() belong to one thread at
 /// a time (the view's cull thread); statistics() may be called from anywhere.
@@ -30,6 +33,9 @@ struct AsyncOptions
 {
     std::uint32_t lookAheadFrames = 4; ///< a region covers the path the eye takes in this many frames
     double slack = 0.0;                ///< grows a region's box every way (world units); 0: 1/10000 of the scene's diagonal
+    /// When positive (every component): a region is at least this box (a bake cell's size), centred
+    /// half the look-ahead path ahead of the eye, so it lasts while the eye crosses it.
+    Vec3 regionSize{0.0};
 };
 
 struct AsyncStatistics
@@ -39,6 +45,8 @@ struct AsyncStatistics
     std::uint64_t missed = 0;          ///< cull() calls no region held (the caller culled itself)
     double lastRegionMs = 0.0;         ///< worker time of the latest region
     std::size_t lastRegionObjects = 0; ///< objects in the latest region's answer
+    std::uint64_t refinedAnswers = 0;  ///< answers replaced by a later pass of the same region
+    double lastFirstPassMs = 0.0;      ///< worker time to the first (fastest) pass of the latest region
 };
 
 class AsyncVisibility

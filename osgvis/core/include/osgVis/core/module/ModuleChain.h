@@ -47,6 +47,10 @@ public:
     /// The region query of every stage in turn, from the same start and with the same end as cull:
     /// objects some view of `region` may see. Requires supportsRegions().
     void cullRegion(const ViewRegion& region, VisibleSet& visible);
+    /// The most passes of any stage (VisibilityModule::regionPasses).
+    std::uint32_t regionPasses() const;
+    /// cullRegion with each stage at `pass` (or its own last pass, when it has fewer).
+    void cullRegionPass(const ViewRegion& region, VisibleSet& visible, std::uint32_t pass);
 
 private:
     /// Every object less those reported Removed, then `refine` per stage, then always-visible ones.

@@ -54,6 +54,15 @@ public:
     /// some such view sees (non-approximate modules). Called only when supportsRegions(); it may
     /// share per-frame state with cull, so the two are never called concurrently on one module.
     virtual void cullRegion(const ViewRegion& region, VisibleSet& visible) { (void)region, (void)visible; }
+    /// Progressive region answers: pass 0 is the fastest, each later one at least as good, the
+    /// last (regionPasses() - 1) what cullRegion answers. Every pass is conservative on its own,
+    /// so a caller may use whichever finished last. The default has one pass: cullRegion.
+    virtual std::uint32_t regionPasses() const { return 1; }
+    virtual void cullRegionPass(const ViewRegion& region, VisibleSet& visible, std::uint32_t pass)
+    {
+        (void)pass;
+        cullRegion(region, visible);
+    }
 
     /// Debug views: when `record` is set, later queries describe their decisions into it (nullptr
     /// stops). Modules without a spatial structure leave it untouched.
