@@ -21,11 +21,18 @@ std::vector<double> planeDepths(std::vector<DepthSample> samples, int count, dou
         total += s.weight;
     if (!(total > 0.0))
         return depths;
+    // Dyadic fractions 1/2, 1/4, 3/4, 1/8, 3/8, ...: the planes of K are among those of K + 1, so
+    // more planes never cull less.
+    std::vector<double> fractions;
+    for (int denominator = 2; int(fractions.size()) < count; denominator *= 2)
+        for (int numerator = 1; numerator < denominator && int(fractions.size()) < count; numerator += 2)
+            fractions.push_back(double(numerator) / double(denominator));
+    std::sort(fractions.begin(), fractions.end());
     double running = 0.0;
     std::size_t next = 0;
-    for (int k = 0; k < count; ++k)
+    for (double fraction : fractions)
     {
-        const double target = total * double(k + 1) / double(count + 1);
+        const double target = total * fraction;
         while (next + 1 < samples.size() && running + samples[next].weight < target)
             running += samples[next++].weight;
         const double depth = std::max(samples[next].depth, minDepth);

@@ -24,8 +24,8 @@ struct DepthSample
     double weight = 0.0; ///< its area-angle from V
 };
 
-/// Depths (> minDepth) of `count` planes: the weighted quantiles (k+1)/(count+1) of the samples,
-/// ascending, repeated ones removed.
+/// Depths (>= minDepth) of `count` planes: the weighted quantiles of the samples at the first
+/// `count` dyadic fractions (1/2, 1/4, 3/4, 1/8, ...), ascending, repeated ones removed.
 std::vector<double> planeDepths(std::vector<DepthSample> samples, int count, double minDepth);
 
 /// The plane at `depth` beyond `face`, with a window that holds the footprints of `occludees`

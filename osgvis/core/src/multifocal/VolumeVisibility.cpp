@@ -190,7 +190,7 @@ VolumePvs computeVolumePvs(const Scene& scene, const std::vector<OccluderPolygon
             std::vector<DepthSample> samples;
             samples.reserve(usable.size());
             for (const FaceOccluder& o : usable)
-                samples.push_back({o.depth, o.areaAngle});
+                samples.push_back({o.depth, std::sqrt(o.areaAngle)});
             const double minDepth = std::max(1e-3 * size, 4.0 * margin);
             for (double depth : planeDepths(samples, options.planesPerDirection, minDepth))
             {

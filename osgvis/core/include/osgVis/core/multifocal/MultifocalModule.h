@@ -35,7 +35,7 @@ public:
     void cull(const View& view, VisibleSet& visible) override;
     bool supportsRegions() const override { return true; }
     void cullRegion(const ViewRegion& region, VisibleSet& visible) override;
-    /// Two passes (§6's progressive answer): first coarse planes (32 pixels, one per face, no
+    /// Two passes (§6's progressive answer): first coarse planes (64 pixels, one per face, no
     /// triangle tests, the 2000 best occluders), then the full options.
     std::uint32_t regionPasses() const override { return 2; }
     void cullRegionPass(const ViewRegion& region, VisibleSet& visible, std::uint32_t pass) override;
