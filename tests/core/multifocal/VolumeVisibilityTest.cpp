@@ -72,9 +72,9 @@ TEST(VolumeVisibility, KeepsEverythingTheRaysSeeFromAnyEyeOfTheVolume)
         kept += answer.count();
         total += city.scene.objects.size();
     }
-    // It culls: along the street the answer keeps 149 of the 252 objects (170 without the sections
-    // through closed buildings; octree's region answer keeps 175, tests/core/async).
-    EXPECT_LE(volumeAnswer(city.scene, regions.front(), occluders).count(), 149u);
+    // It culls: along the street the answer keeps 106 of the 252 objects (octree's region answer
+    // keeps 175, tests/core/async).
+    EXPECT_LE(volumeAnswer(city.scene, regions.front(), occluders).count(), 106u);
     EXPECT_LT(kept, total);
 }
 
