@@ -10,7 +10,6 @@
 #include <tbb/task_arena.h>
 
 #include <atomic>
-#include <chrono>
 #include <deque>
 #include <mutex>
 
@@ -160,7 +159,6 @@ private:
 
 CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options, const BakeProgress& progress)
 {
-    const auto start = std::chrono::steady_clock::now();
     CellPortalData data;
     data.fingerprint = sceneFingerprint(scene);
     data.objectCount = static_cast<std::uint32_t>(scene.objects.size());
@@ -210,7 +208,6 @@ CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options, co
         stats.averageVisibleCells /= double(cellCount);
         stats.averagePvsObjects /= double(cellCount);
     }
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return data;
 }
 } // namespace osgVis::core
