@@ -10,6 +10,7 @@
 #include <osgVis/SceneExtractor>
 #include <osgVis/Version>
 #include <osgVis/core/pvs/PvsFormat.h>
+#include <osgVis/core/scene/SceneFingerprint.h>
 
 #include <osgDB/ReadFile>
 
@@ -92,6 +93,9 @@ int bake(const PvsToolOptions& o)
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     bar.finish(file.data.graph.cells.size(), seconds);
 
+    file.method = "cellportal";
+    file.options = osgVis::core::canonicalBakeOptions(o.bake);
+    file.geometryFingerprint = osgVis::core::sceneGeometryFingerprint(scene);
     file.modelPath = modelPathFromPvs(o.modelFile, o.pvsFile);
     try
     {

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
-// osgvispvs end to end: bakes a small generated office into a .pvs that decodes, prints and writes
-// the bake's statistics, and refuses bad input with a message naming the thing and the documented
-// exit status (1: files and scenes, 2: command line).
+// osgvispvs end to end: bakes a small generated office into a .pvs that decodes (the same bytes for
+// the same bake), prints and writes the bake's statistics, and refuses bad input with a message
+// naming the thing and the documented exit status (1: files and scenes, 2: command line).
 #include "AppProcess.h"
 #include "BadModelFiles.h"
 #include "BenchJson.h"
 
+#include <osgVis/core/cellportal/CellPortalBake.h>
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/gen/Generator.h>
 
@@ -59,6 +60,12 @@ void expectFailure(const std::string& arguments, int exitCode, const std::string
     const AppRun run = osgvispvs(arguments);
     EXPECT_EQ(run.exitCode, exitCode) << arguments << " printed:\n" << run.output;
     EXPECT_NE(run.output.find(message), std::string::npos) << arguments << " printed:\n" << run.output;
+}
+
+std::vector<std::uint8_t> readBytes(const fs::path& path)
+{
+    const std::string text = readText(path);
+    return std::vector<std::uint8_t>(text.begin(), text.end());
 }
 } // namespace
 
@@ -144,6 +151,22 @@ TEST(PvsTool, RefusesBadInputNamingIt)
     expectFailure(quoted(empty) + o + " --json /nonexistent-osgvis-dir/s.json", 1,
                   "cannot write the JSON file '/nonexistent-osgvis-dir/s.json'");
     EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(PvsTool, SameBakeGivesTheSameBytesAndRecordsIt)
+{
+    const fs::path model = writeSmallOffice();
+    const fs::path one = model.parent_path() / "one.pvs", two = model.parent_path() / "two.pvs";
+    ASSERT_EQ(osgvispvs(quoted(model) + " -o " + quoted(one) + " --threads 1 --max-cells 64").exitCode, 0);
+    ASSERT_EQ(osgvispvs(quoted(model) + " -o " + quoted(two) + " --threads 2 --max-cells 64").exitCode, 0);
+    EXPECT_EQ(readBytes(one), readBytes(two)); // no time or thread count in the file
+    const osgVis::core::PvsFile file = osgVis::core::readPvsFile(one.string());
+    EXPECT_EQ(file.method, "cellportal");
+    osgVis::core::BakeOptions options;
+    options.subdivision.maxCells = 64;
+    EXPECT_EQ(file.options, osgVis::core::canonicalBakeOptions(options));
+    EXPECT_NE(file.geometryFingerprint, 0u);
+    EXPECT_NE(file.geometryFingerprint, file.data.fingerprint);
 }
 
 TEST(PvsTool, HelpAndVersionTellTheTruth)

@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include <atomic>
+#include <charconv>
 #include <deque>
 #include <mutex>
 
@@ -209,5 +210,19 @@ CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options, co
         stats.averagePvsObjects /= double(cellCount);
     }
     return data;
+}
+
+std::string canonicalBakeOptions(const BakeOptions& options)
+{
+    // note: to_chars gives the shortest text that reads back exactly, whatever the locale.
+    const auto number = [](double value)
+    {
+        char text[32];
+        return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
+    };
+    const SubdivisionOptions& s = options.subdivision;
+    return "min-coverage=" + number(s.minCoverage) + " min-face-area=" + number(s.minFaceArea) +
+           " min-cell-size=" + number(s.minCellSize) + " max-depth=" + std::to_string(s.maxDepth) +
+           " max-cells=" + std::to_string(s.maxCells) + " stab-budget=" + std::to_string(options.stabBudget);
 }
 } // namespace osgVis::core
