@@ -104,6 +104,47 @@ inline core::PvsFile makeSamplePvs()
     return file;
 }
 
+// A whole view-cell bake of seven cells, a row of unit boxes along x, cell i seeing objects i..i+5
+// of 37, for the merge tests.
+inline core::PvsFile makeViewCellBake()
+{
+    using namespace osgVis::core;
+    PvsFile file;
+    file.modelPath = "office.osgb";
+    file.method = "multifocal";
+    file.options = "resolution=64";
+    file.nearDistance = 0.05;
+    file.geometryFingerprint = 0x1111222233334444ull;
+    file.data.fingerprint = 0x5555666677778888ull;
+    file.data.objectCount = 37;
+    file.hasCellPortal = false;
+    file.hasViewCells = true;
+    file.viewCells.totalCells = 7;
+    for (std::uint32_t c = 0; c < 7; ++c)
+    {
+        file.viewCells.cellIndices.push_back(c);
+        file.viewCells.cells.push_back(Aabb({double(c), 0, 0}, {double(c + 1), 1, 1}));
+        VisibleSet pvs(37);
+        for (ObjectId id = c; id < c + 6; ++id)
+            pvs.set(id);
+        file.viewCells.pvs.push_back(pvs);
+    }
+    return file;
+}
+
+// The range file a bake of cells [begin, end) of the whole writes: read back from its bytes.
+inline core::PvsFile viewCellRange(const core::PvsFile& whole, std::uint32_t begin, std::uint32_t end)
+{
+    using namespace osgVis::core;
+    PvsFile range = whole;
+    ViewCellPvs& v = range.viewCells;
+    v.cellIndices.assign(whole.viewCells.cellIndices.begin() + begin, whole.viewCells.cellIndices.begin() + end);
+    v.cells.assign(whole.viewCells.cells.begin() + begin, whole.viewCells.cells.begin() + end);
+    v.pvs.assign(whole.viewCells.pvs.begin() + begin, whole.viewCells.pvs.begin() + end);
+    const std::vector<std::uint8_t> bytes = encodePvs(range);
+    return decodePvs(bytes.data(), bytes.size());
+}
+
 inline std::uint64_t readLittleEndian(const std::vector<std::uint8_t>& bytes, std::size_t at, int width)
 {
     std::uint64_t value = 0;
