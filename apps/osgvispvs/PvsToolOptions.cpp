@@ -51,6 +51,7 @@ std::string pvsToolUsage()
 {
     const core::BakeOptions defaults;
     return "usage: osgvispvs MODEL -o OUT.pvs [options]\n"
+           "       osgvispvs merge IN1.pvs IN2.pvs ... -o OUT.pvs [--complete]   (osgvispvs merge --help)\n"
            "       osgvispvs --help | --version\n"
            "\n"
            "Bakes cell-and-portal visibility (Teller & Sequin) for MODEL (any format osgDB reads, e.g. a\n"

@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: MIT
 // osgvispvs: bakes cell-and-portal visibility for a model into a .pvs file (docs/pvs-format.md) and
-// reports the bake's statistics. Exit status 1 for files that cannot be read or written or an empty
-// scene, 2 for a bad command line (as osgvisbench).
+// reports the bake's statistics; `osgvispvs merge` joins range files of a view-cell bake (PvsMerge.h).
+// Exit status 1 for files that cannot be read or written or an empty scene, 2 for a bad command line
+// (as osgvisbench).
 #include "BakeProgressBar.h"
 #include "BakeSummary.h"
+#include "PvsMerge.h"
 #include "PvsToolOptions.h"
 
 #include <osgVis/ModelRepair>
 #include <osgVis/SceneExtractor>
 #include <osgVis/Version>
 #include <osgVis/core/pvs/PvsFormat.h>
+#include <osgVis/core/scene/SceneFingerprint.h>
 
 #include <osgDB/ReadFile>
 
@@ -92,6 +95,9 @@ int bake(const PvsToolOptions& o)
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     bar.finish(file.data.graph.cells.size(), seconds);
 
+    file.method = "cellportal";
+    file.options = osgVis::core::canonicalBakeOptions(o.bake);
+    file.geometryFingerprint = osgVis::core::sceneGeometryFingerprint(scene);
     file.modelPath = modelPathFromPvs(o.modelFile, o.pvsFile);
     try
     {
@@ -123,6 +129,8 @@ int bake(const PvsToolOptions& o)
 
 int main(int argc, char** argv)
 {
+    if (argc > 1 && std::string(argv[1]) == "merge")
+        return runPvsMerge(std::vector<std::string>(argv + 2, argv + argc));
     PvsToolOptions options;
     try
     {

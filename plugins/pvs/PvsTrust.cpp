@@ -20,17 +20,21 @@ std::string hex(std::uint64_t value)
 }
 } // namespace
 
-std::string mismatchWithModel(const core::CellPortalData& data, osg::Node& model)
+std::string mismatchWithModel(const core::PvsFile& pvs, osg::Node& model)
 {
-    // note: the fingerprint hashes no triangles, so the check skips collecting them.
+    // note: only the geometry fingerprint hashes triangles; without it the check skips collecting them.
+    const bool geometry = pvs.geometryFingerprint != 0;
     ExtractionOptions options;
-    options.keepTriangles = false;
+    options.keepTriangles = geometry;
     const osg::ref_ptr<ExtractedScene> extracted = extractScene(model, options);
-    const std::uint64_t fingerprint = core::sceneFingerprint(extracted->scene);
+    const std::uint64_t baked = geometry ? pvs.geometryFingerprint : pvs.data.fingerprint;
+    const std::uint64_t fingerprint =
+        geometry ? core::sceneGeometryFingerprint(extracted->scene) : core::sceneFingerprint(extracted->scene);
     const std::size_t objects = extracted->scene.objects.size();
-    if (fingerprint == data.fingerprint && objects == data.objectCount)
+    if (fingerprint == baked && objects == pvs.data.objectCount)
         return "";
-    return "baked for another model (fingerprint " + hex(data.fingerprint) + ", " + std::to_string(data.objectCount) +
+    const char* kind = geometry ? "geometry fingerprint " : "fingerprint ";
+    return std::string("baked for another model (") + kind + hex(baked) + ", " + std::to_string(pvs.data.objectCount) +
            " objects; this model has " + hex(fingerprint) + ", " + std::to_string(objects) + " objects)";
 }
 

@@ -6,7 +6,7 @@
 //   "osgVis:pvs-trusted"                   the .pvs matches the model; its data are registered
 //   "osgVis:pvs-untrusted: <reason>"       corrupt .pvs, or baked for another model
 #include <osgVis/VisibilityGroup>
-#include <osgVis/core/pvs/CellPortalData.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 
 #include <osg/Node>
 
@@ -17,8 +17,9 @@ namespace osgVis::pvsplugin
 extern const char* const TrustedDescription;
 extern const char* const UntrustedPrefix; // followed by the reason
 
-// "" when `data` were baked for `model` (same fingerprint and object count), else why not.
-std::string mismatchWithModel(const core::CellPortalData& data, osg::Node& model);
+// "" when `pvs` was baked for `model`, else why not: the same geometry fingerprint and object count
+// where the file has a geometry fingerprint (version 2), else the same fingerprint and object count.
+std::string mismatchWithModel(const core::PvsFile& pvs, osg::Node& model);
 
 osg::ref_ptr<VisibilityGroup> makeTrustedGroup(osg::Node& model, const std::string& name);
 osg::ref_ptr<VisibilityGroup> makeUntrustedGroup(osg::Node& model, const std::string& name, const std::string& reason);

@@ -4,7 +4,8 @@
 // Reading x.pvs gives the model the file names, under an osgVis::VisibilityGroup named "x.pvs":
 // - the .pvs reads and was baked for the model → modes "cellportal", its data registered with
 //   core::registerBakedCellPortalData, description "osgVis:pvs-trusted";
-// - the .pvs was baked for another model → modes "frustum", a warning, description
+// - the .pvs was baked for another model (its geometry fingerprint, or for a version 1 file its
+//   fingerprint, differs) or holds no cell-portal data → modes "frustum", a warning, description
 //   "osgVis:pvs-untrusted: <reason>";
 // - the .pvs is corrupt, truncated or of a newer version → the model saved beside it (x.osgb,
 //   x.osgt, x.ive, x.osg) under "frustum" with a warning, or an error when there is none;
@@ -19,6 +20,7 @@
 #include <osgVis/SceneExtractor>
 #include <osgVis/core/cellportal/CellPortalModule.h>
 #include <osgVis/core/pvs/PvsFormat.h>
+#include <osgVis/core/scene/SceneFingerprint.h>
 
 #include <osg/Notify>
 #include <osgDB/FileNameUtils>
@@ -82,7 +84,14 @@ osgDB::ReaderWriter::ReadResult showWithModel(core::PvsFile&& pvs, const std::st
         return osgDB::ReaderWriter::ReadResult("osgVis: cannot read model '" + modelFile + "' named by " + pvsFile);
     repairLoadedModel(*model, modelFile); // as osgvispvs did before baking
     const std::string name = osgDB::getSimpleFileName(pvsFile);
-    const std::string mismatch = mismatchWithModel(pvs.data, *model);
+    if (!pvs.hasCellPortal)
+    {
+        const std::string reason = "holds no cell-portal data (method '" + pvs.method + "')";
+        OSG_WARN << "osgVis: " << pvsFile << " " << reason << "; showing " << modelFile << " with frustum culling only"
+                 << std::endl;
+        return makeUntrustedGroup(*model, name, reason);
+    }
+    const std::string mismatch = mismatchWithModel(pvs, *model);
     if (!mismatch.empty())
     {
         OSG_WARN << "osgVis: " << pvsFile << " was " << mismatch << ", not for " << modelFile
@@ -182,15 +191,17 @@ public:
                 if (!model)
                     return WriteResult("osgVis: cannot read model=" + modelFile + " for " + file);
                 const osg::ref_ptr<ExtractedScene> named = extractScene(*model);
-                if (core::sceneFingerprint(named->scene) != core::sceneFingerprint(scene))
+                if (core::sceneGeometryFingerprint(named->scene) != core::sceneGeometryFingerprint(scene))
                     return WriteResult("osgVis: model=" + modelFile + " is not the node being written to " + file +
                                        " (their fingerprints differ)");
             }
 
             core::PvsFile pvs;
-            pvs.data = core::bakeCellPortal(scene);
-            pvs.data.fingerprint = core::sceneFingerprint(scene);
-            pvs.data.objectCount = static_cast<std::uint32_t>(scene.objects.size());
+            const core::BakeOptions bake;
+            pvs.data = core::bakeCellPortal(scene, bake);
+            pvs.method = "cellportal";
+            pvs.options = core::canonicalBakeOptions(bake);
+            pvs.geometryFingerprint = core::sceneGeometryFingerprint(scene);
             if (modelFile.empty())
             {
                 modelFile = osgDB::getNameLessExtension(file) + ".osgb";

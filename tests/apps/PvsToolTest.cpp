@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
-// osgvispvs end to end: bakes a small generated office into a .pvs that decodes, prints and writes
-// the bake's statistics, and refuses bad input with a message naming the thing and the documented
-// exit status (1: files and scenes, 2: command line).
+// osgvispvs end to end: bakes a small generated office into a .pvs that decodes (the same bytes for
+// the same bake), prints and writes the bake's statistics, merges the range files of a view-cell
+// bake, and refuses bad input with a message naming the thing and the documented exit status
+// (1: files and scenes, 2: command line).
 #include "AppProcess.h"
 #include "BadModelFiles.h"
 #include "BenchJson.h"
+#include "PvsSample.h"
 
+#include <osgVis/core/cellportal/CellPortalBake.h>
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/gen/Generator.h>
 
@@ -59,6 +62,21 @@ void expectFailure(const std::string& arguments, int exitCode, const std::string
     const AppRun run = osgvispvs(arguments);
     EXPECT_EQ(run.exitCode, exitCode) << arguments << " printed:\n" << run.output;
     EXPECT_NE(run.output.find(message), std::string::npos) << arguments << " printed:\n" << run.output;
+}
+
+std::vector<std::uint8_t> readBytes(const fs::path& path)
+{
+    const std::string text = readText(path);
+    return std::vector<std::uint8_t>(text.begin(), text.end());
+}
+
+// Cells [begin, end) of the sample view-cell bake (tests/core/pvs/PvsSample.h) as `dir`/`name`.
+fs::path writeRange(const fs::path& dir, const std::string& name, std::uint32_t begin, std::uint32_t end)
+{
+    const fs::path file = dir / name;
+    osgVis::core::writePvsFile(file.string(),
+                               osgVis::test::viewCellRange(osgVis::test::makeViewCellBake(), begin, end));
+    return file;
 }
 } // namespace
 
@@ -146,14 +164,90 @@ TEST(PvsTool, RefusesBadInputNamingIt)
     EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(PvsTool, SameBakeGivesTheSameBytesAndRecordsIt)
+{
+    const fs::path model = writeSmallOffice();
+    const fs::path one = model.parent_path() / "one.pvs", two = model.parent_path() / "two.pvs";
+    ASSERT_EQ(osgvispvs(quoted(model) + " -o " + quoted(one) + " --threads 1 --max-cells 64").exitCode, 0);
+    ASSERT_EQ(osgvispvs(quoted(model) + " -o " + quoted(two) + " --threads 2 --max-cells 64").exitCode, 0);
+    EXPECT_EQ(readBytes(one), readBytes(two)); // no time or thread count in the file
+    const osgVis::core::PvsFile file = osgVis::core::readPvsFile(one.string());
+    EXPECT_EQ(file.method, "cellportal");
+    osgVis::core::BakeOptions options;
+    options.subdivision.maxCells = 64;
+    EXPECT_EQ(file.options, osgVis::core::canonicalBakeOptions(options));
+    EXPECT_NE(file.geometryFingerprint, 0u);
+    EXPECT_NE(file.geometryFingerprint, file.data.fingerprint);
+}
+
+TEST(PvsTool, MergeJoinsTheRangesOfOneBake)
+{
+    const fs::path dir = scratchDirectory("apps", "PvsToolMerge");
+    const fs::path a = writeRange(dir, "a.pvs", 0, 3), b = writeRange(dir, "b.pvs", 3, 5),
+                   c = writeRange(dir, "c.pvs", 5, 7);
+    const fs::path merged = dir / "merged.pvs";
+    const AppRun run =
+        osgvispvs("merge " + quoted(c) + " " + quoted(a) + " " + quoted(b) + " -o " + quoted(merged) + " --complete");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_EQ(run.output,
+              "merged 3 files into " + merged.string() + ": 7 of the 7 cells of the bake, model 'office.osgb'\n");
+    EXPECT_EQ(readBytes(merged), osgVis::core::encodePvs(osgVis::test::makeViewCellBake()));
+
+    // Written elsewhere, the merged file names the model relative to its own folder.
+    fs::create_directories(dir / "out");
+    const AppRun partial =
+        osgvispvs("merge " + quoted(a) + " " + quoted(c) + " --output " + quoted(dir / "out" / "m.pvs"));
+    ASSERT_EQ(partial.exitCode, 0) << partial.output;
+    const osgVis::core::PvsFile file = osgVis::core::readPvsFile((dir / "out" / "m.pvs").string());
+    EXPECT_EQ(file.modelPath, "../office.osgb");
+    EXPECT_EQ(file.viewCells.cellIndices, (std::vector<std::uint32_t>{0, 1, 2, 5, 6}));
+}
+
+TEST(PvsTool, MergeRefusesWhatDoesNotBelongNamingIt)
+{
+    const fs::path dir = scratchDirectory("apps", "PvsToolMergeErrors");
+    const fs::path a = writeRange(dir, "a.pvs", 0, 3), b = writeRange(dir, "b.pvs", 2, 5),
+                   c = writeRange(dir, "c.pvs", 5, 7);
+    const fs::path out = dir / "out.pvs";
+    const std::string o = " -o " + quoted(out);
+    expectFailure("merge " + quoted(a) + " " + quoted(b) + o, 1,
+                  "osgvispvs merge: cell 2 is in both " + a.string() + " and " + b.string());
+    expectFailure("merge " + quoted(a) + " " + quoted(c) + o + " --complete", 1,
+                  "osgvispvs merge: the inputs miss 2 of the 7 cells: 3-4");
+    osgVis::core::PvsFile otherModel = osgVis::test::viewCellRange(osgVis::test::makeViewCellBake(), 3, 5);
+    otherModel.geometryFingerprint ^= 1;
+    osgVis::core::writePvsFile((dir / "other.pvs").string(), otherModel);
+    expectFailure("merge " + quoted(a) + " " + quoted(dir / "other.pvs") + o, 1,
+                  "osgvispvs merge: " + (dir / "other.pvs").string() + " and " + a.string() +
+                      " were baked for different models (geometry fingerprint 0x1111222233334445 and "
+                      "0x1111222233334444)");
+    osgVis::core::writePvsFile((dir / "cells.pvs").string(), osgVis::test::makeCellPortalSample());
+    expectFailure("merge " + quoted(dir / "cells.pvs") + o, 1,
+                  "osgvispvs merge: cannot merge " + (dir / "cells.pvs").string() + ": it holds no view cells");
+    expectFailure("merge " + quoted(dir / "missing.pvs") + o, 1,
+                  "osgvispvs merge: cannot open .pvs file '" + (dir / "missing.pvs").string() + "'");
+    expectFailure("merge " + quoted(a) + " -o /nonexistent-osgvis-dir/x.pvs", 1,
+                  "osgvispvs merge: cannot write .pvs file '/nonexistent-osgvis-dir/x.pvs.tmp'");
+    EXPECT_FALSE(fs::exists(out));
+    // Command line: exit 2.
+    expectFailure("merge" + o, 2, "merge: missing the .pvs files to merge");
+    expectFailure("merge " + quoted(a), 2, "merge: missing output path (-o OUT.pvs)");
+    expectFailure("merge " + quoted(a) + " -o", 2, "-o needs a value");
+    expectFailure("merge " + quoted(a) + o + " --cells 1:2", 2, "merge: unknown argument '--cells'");
+}
+
 TEST(PvsTool, HelpAndVersionTellTheTruth)
 {
     const AppRun help = osgvispvs("--help");
     EXPECT_EQ(help.exitCode, 0);
     for (const char* option : {"-o, --output", "--min-coverage", "--min-face-area", "--min-cell-size", "--max-cells",
                                "--stab-budget", "--threads", "0 = all cores", "--json", "--progress", "--version",
-                               "(default 0.3)", "(default 50000)"})
+                               "(default 0.3)", "(default 50000)", "osgvispvs merge IN1.pvs IN2.pvs ... -o OUT.pvs"})
         EXPECT_NE(help.output.find(option), std::string::npos) << option << " in\n" << help.output;
+    const AppRun mergeHelp = osgvispvs("merge --help");
+    EXPECT_EQ(mergeHelp.exitCode, 0);
+    for (const char* option : {"usage: osgvispvs merge", "-o, --output OUT.pvs", "--complete", "Exit status"})
+        EXPECT_NE(mergeHelp.output.find(option), std::string::npos) << option << " in\n" << mergeHelp.output;
     const AppRun version = osgvispvs("--version");
     EXPECT_EQ(version.exitCode, 0);
     EXPECT_NE(version.output.find("osgVis 0.1.0"), std::string::npos) << version.output;

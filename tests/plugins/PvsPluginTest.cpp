@@ -1,11 +1,18 @@
 // SPDX-License-Identifier: MIT
 // osgdb_pvs through osgDB, as an application uses it: write x.pvs (bake + model beside), read it
-// back as a trusted cell-portal group, and every way the pair can go wrong.
+// back as a trusted cell-portal group, and every way the pair can go wrong; version 1 files are
+// checked by the fingerprint they have.
+#include "PvsSample.h"
+
 #include <osgVis/SceneExtractor>
 #include <osgVis/VisibilityGroup>
 #include <osgVis/core/cellportal/CellPortalModule.h>
 #include <osgVis/core/pvs/PvsFormat.h>
+#include <osgVis/core/scene/SceneFingerprint.h>
 #include <osgVis/gen/Generator.h>
+
+#include <osg/Geode>
+#include <osg/Geometry>
 
 #include <osgDB/ReadFile>
 #include <osgDB/Registry>
@@ -27,6 +34,57 @@ osg::ref_ptr<osg::Group> makeOffice(std::uint32_t seed)
     options.triangles = 2000;
     options.seed = seed;
     return osgVis::gen::generate(options).root;
+}
+
+//   z
+//   4 +---+---+---+---+      a wall in the plane y = 0, a 4 x 4 grid of quads drawn as 32 separate
+//     |   |   |   |   |      triangles, and a box behind it (y 2..3). The hole: the two triangles of
+//   2 +---+---+---+---+      quad (1, 1) (marked #) collapse onto its corner, so the wall keeps its
+//     |   |###|   |   |      bounds, triangle count and state: only the geometry fingerprint sees it.
+//   0 +---+---+---+---+ x
+//     0   1   2   3   4
+osg::ref_ptr<osg::Group> makeWallAndBox(bool withHole)
+{
+    osg::ref_ptr<osg::Vec3Array> wall = new osg::Vec3Array;
+    for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 4; ++k)
+        {
+            const bool hole = withHole && i == 1 && k == 1;
+            const auto at = [&](int di, int dk)
+            { return hole ? osg::Vec3(float(i), 0, float(k)) : osg::Vec3(float(i + di), 0, float(k + dk)); };
+            for (const osg::Vec3& v : {at(0, 0), at(1, 0), at(1, 1), at(0, 0), at(1, 1), at(0, 1)})
+                wall->push_back(v);
+        }
+    osg::ref_ptr<osg::Vec3Array> box = new osg::Vec3Array;
+    const osg::Vec3 lo(1, 2, 1), hi(2, 3, 2);
+    for (int face = 0; face < 6; ++face)
+    {
+        // Two triangles per face of the box [lo, hi]; winding does not matter to these tests.
+        const int axis = face / 2;
+        const float side = face % 2 ? hi[axis] : lo[axis];
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        const auto corner = [&](bool du, bool dv)
+        {
+            osg::Vec3 p;
+            p[axis] = side;
+            p[u] = du ? hi[u] : lo[u];
+            p[v] = dv ? hi[v] : lo[v];
+            return p;
+        };
+        for (const osg::Vec3& p : {corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 0), corner(1, 1), corner(0, 1)})
+            box->push_back(p);
+    }
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    for (osg::Vec3Array* vertices : {wall.get(), box.get()})
+    {
+        osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
+        geometry->setVertexArray(vertices);
+        geometry->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLES, 0, GLsizei(vertices->size())));
+        geode->addDrawable(geometry);
+    }
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(geode);
+    return root;
 }
 
 class PvsPlugin : public testing::Test
@@ -68,6 +126,19 @@ protected:
 
     static void truncateToHalf(const std::string& file) { fs::resize_file(file, fs::file_size(file) / 2); }
 
+    // Reads `file` and expects the model under frustum culling, untrusted for a reason starting with `reason`.
+    static osg::ref_ptr<osgVis::VisibilityGroup> readUntrusted(const std::string& file, const std::string& reason)
+    {
+        osg::ref_ptr<osgVis::VisibilityGroup> group = readGroup(file);
+        EXPECT_TRUE(group.valid());
+        if (!group)
+            return group;
+        EXPECT_EQ(group->getModes(), "frustum");
+        EXPECT_EQ(group->getNumChildren(), 1u);
+        EXPECT_EQ(description(*group).rfind("osgVis:pvs-untrusted: " + reason, 0), 0u) << description(*group);
+        return group;
+    }
+
     fs::path _dir;
 };
 } // namespace
@@ -99,12 +170,74 @@ TEST_F(PvsPlugin, ReplacedModelIsShownWithFrustumOnly)
 {
     writeOffice();
     ASSERT_TRUE(osgDB::writeNodeFile(*makeOffice(2), path("x.osgb")));
-    const osg::ref_ptr<osgVis::VisibilityGroup> group = readGroup(path("x.pvs"));
+    readUntrusted(path("x.pvs"), "baked for another model (geometry fingerprint 0x");
+}
+
+TEST_F(PvsPlugin, WrittenPvsRecordsItsBake)
+{
+    writeOffice();
+    const osgVis::core::PvsFile pvs = osgVis::core::readPvsFile(path("x.pvs"));
+    EXPECT_EQ(pvs.version, 2u);
+    EXPECT_EQ(pvs.method, "cellportal");
+    EXPECT_EQ(pvs.options, osgVis::core::canonicalBakeOptions({}));
+    EXPECT_EQ(pvs.nearDistance, 0.0);
+    EXPECT_TRUE(pvs.hasCellPortal);
+    EXPECT_FALSE(pvs.hasViewCells);
+    const auto extracted = osgVis::extractScene(*makeOffice(1));
+    EXPECT_EQ(pvs.geometryFingerprint, osgVis::core::sceneGeometryFingerprint(extracted->scene));
+}
+
+TEST_F(PvsPlugin, HoleCutIntoAWallIsAnotherModel)
+{
+    ASSERT_TRUE(osgDB::writeNodeFile(*makeWallAndBox(false), path("x.pvs")));
+    const osg::ref_ptr<osgVis::VisibilityGroup> baked = readGroup(path("x.pvs"));
+    ASSERT_TRUE(baked.valid());
+    EXPECT_EQ(description(*baked), "osgVis:pvs-trusted");
+    ASSERT_TRUE(osgDB::writeNodeFile(*makeWallAndBox(true), path("x.osgb")));
+    const osg::ref_ptr<osgVis::VisibilityGroup> group =
+        readUntrusted(path("x.pvs"), "baked for another model (geometry fingerprint 0x");
     ASSERT_TRUE(group.valid());
-    EXPECT_EQ(group->getModes(), "frustum");
-    EXPECT_EQ(description(*group).rfind("osgVis:pvs-untrusted: baked for another model (fingerprint 0x", 0), 0u)
-        << description(*group);
-    EXPECT_EQ(group->getNumChildren(), 1u);
+    // The version 1 fingerprint cannot tell the two apart: bounds, triangle counts and flags agree.
+    const auto before = osgVis::extractScene(*makeWallAndBox(false));
+    const auto after = osgVis::extractScene(*group->getChild(0));
+    EXPECT_EQ(osgVis::core::sceneFingerprint(after->scene), osgVis::core::sceneFingerprint(before->scene));
+    EXPECT_EQ(osgVis::core::sceneFingerprint(after->scene), osgVis::core::readPvsFile(path("x.pvs")).data.fingerprint);
+}
+
+TEST_F(PvsPlugin, Version1FileIsCheckedByItsFingerprint)
+{
+    writeOffice();
+    const std::vector<std::uint8_t> v2 = osgVis::core::encodePvs(osgVis::core::readPvsFile(path("x.pvs")));
+    const std::vector<std::uint8_t> v1 = osgVis::test::rewriteAsVersion1(v2);
+    std::ofstream(path("x.pvs"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(v1.data()), std::streamsize(v1.size()));
+    ASSERT_EQ(osgVis::core::readPvsFile(path("x.pvs")).version, 1u);
+    const osg::ref_ptr<osgVis::VisibilityGroup> trusted = readGroup(path("x.pvs"));
+    ASSERT_TRUE(trusted.valid());
+    EXPECT_EQ(trusted->getModes(), "cellportal");
+    EXPECT_EQ(description(*trusted), "osgVis:pvs-trusted");
+
+    ASSERT_TRUE(osgDB::writeNodeFile(*makeOffice(2), path("x.osgb")));
+    readUntrusted(path("x.pvs"), "baked for another model (fingerprint 0x");
+}
+
+TEST_F(PvsPlugin, PvsWithoutCellPortalDataShowsFrustumOnly)
+{
+    writeOffice();
+    osgVis::core::PvsFile pvs = osgVis::core::readPvsFile(path("x.pvs"));
+    pvs.method = "multifocal";
+    pvs.hasCellPortal = false;
+    pvs.data.graph = {};
+    pvs.data.sources.clear();
+    pvs.hasViewCells = true;
+    pvs.viewCells.totalCells = 1;
+    pvs.viewCells.cellIndices = {0};
+    pvs.viewCells.cells = {osgVis::core::Aabb(osgVis::core::Vec3(0.0), osgVis::core::Vec3(1.0))};
+    pvs.viewCells.pvs = {osgVis::core::VisibleSet(pvs.data.objectCount, true)};
+    osgVis::core::writePvsFile(path("x.pvs"), pvs);
+    const osg::ref_ptr<osgVis::VisibilityGroup> group = readUntrusted(path("x.pvs"), "holds no cell-portal data");
+    ASSERT_TRUE(group.valid());
+    EXPECT_EQ(description(*group), "osgVis:pvs-untrusted: holds no cell-portal data (method 'multifocal')");
 }
 
 TEST_F(PvsPlugin, TruncatedPvsShowsTheModelBesideWithFrustumOnly)

@@ -3,6 +3,7 @@
 // joined by doors, a room around a corner, an open field (one cell), and the search budget.
 #include <osgVis/core/cellportal/CellPortalModule.h>
 #include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 
 #include "BoxScenes.h"
 
@@ -176,6 +177,38 @@ TEST(CellPortal, ResultsDoNotDependOnThreadCount)
         EXPECT_TRUE(a.sources[c].cellToObject == b.sources[c].cellToObject);
         EXPECT_EQ(a.sources[c].stabTree.size(), b.sources[c].stabTree.size());
     }
+}
+
+TEST(CellPortal, SameBakeGivesTheSamePvsBytes)
+{
+    // No wall-clock time in the data: bakes on one and on two threads save to identical files.
+    RoomRow row = roomRow(5, {1.5, 0.4, 2.6, 1.5});
+    BakeOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    PvsFile a, b;
+    a.data = bakeCellPortal(row.scene, one);
+    b.data = bakeCellPortal(row.scene, two);
+    a.method = b.method = "cellportal";
+    a.options = canonicalBakeOptions(one);
+    b.options = canonicalBakeOptions(two);
+    EXPECT_EQ(encodePvs(a), encodePvs(b));
+}
+
+TEST(CellPortal, CanonicalOptionsSpellEverySettingButThreads)
+{
+    BakeOptions options;
+    const std::string defaults =
+        "min-coverage=0.3 min-face-area=0 min-cell-size=1e-04 max-depth=40 max-cells=200000 stab-budget=50000";
+    EXPECT_EQ(canonicalBakeOptions(options), defaults);
+    options.threads = 3;
+    EXPECT_EQ(canonicalBakeOptions(options), defaults);
+    options.subdivision.minCoverage = 0.1 + 0.2;
+    options.subdivision.minFaceArea = 2.5;
+    options.subdivision.maxCells = 64;
+    options.stabBudget = 500;
+    EXPECT_EQ(canonicalBakeOptions(options), "min-coverage=0.30000000000000004 min-face-area=2.5 min-cell-size=1e-04 "
+                                             "max-depth=40 max-cells=64 stab-budget=500");
 }
 
 TEST(CellPortal, RegisteredUnderTheFourStageNames)

@@ -10,7 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include <atomic>
-#include <chrono>
+#include <charconv>
 #include <deque>
 #include <mutex>
 
@@ -160,7 +160,6 @@ private:
 
 CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options, const BakeProgress& progress)
 {
-    const auto start = std::chrono::steady_clock::now();
     CellPortalData data;
     data.fingerprint = sceneFingerprint(scene);
     data.objectCount = static_cast<std::uint32_t>(scene.objects.size());
@@ -210,7 +209,20 @@ CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options, co
         stats.averageVisibleCells /= double(cellCount);
         stats.averagePvsObjects /= double(cellCount);
     }
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return data;
+}
+
+std::string canonicalBakeOptions(const BakeOptions& options)
+{
+    // note: to_chars gives the shortest text that reads back exactly, whatever the locale.
+    const auto number = [](double value)
+    {
+        char text[32];
+        return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
+    };
+    const SubdivisionOptions& s = options.subdivision;
+    return "min-coverage=" + number(s.minCoverage) + " min-face-area=" + number(s.minFaceArea) +
+           " min-cell-size=" + number(s.minCellSize) + " max-depth=" + std::to_string(s.maxDepth) +
+           " max-cells=" + std::to_string(s.maxCells) + " stab-budget=" + std::to_string(options.stabBudget);
 }
 } // namespace osgVis::core

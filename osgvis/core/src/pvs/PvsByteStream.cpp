@@ -6,6 +6,13 @@
 
 namespace osgVis::core
 {
+std::uint32_t encodableCount(std::size_t count, const char* what)
+{
+    if (count > 0xFFFFFFFFu)
+        throw PvsFormatError(std::string("cannot encode .pvs: too many ") + what);
+    return static_cast<std::uint32_t>(count);
+}
+
 void PvsByteWriter::u32(std::uint32_t value)
 {
     for (int i = 0; i < 4; ++i)
@@ -41,6 +48,14 @@ void PvsByteWriter::string(const std::string& value)
         throw PvsFormatError("cannot write a string of " + std::to_string(value.size()) + " bytes to a .pvs file");
     u32(static_cast<std::uint32_t>(value.size()));
     _bytes.insert(_bytes.end(), value.begin(), value.end());
+}
+
+void PvsByteWriter::box(const Aabb& value)
+{
+    for (int i = 0; i < 3; ++i)
+        f64(value.min[i]);
+    for (int i = 0; i < 3; ++i)
+        f64(value.max[i]);
 }
 
 void PvsByteWriter::patchU64(std::size_t offset, std::uint64_t value)
@@ -185,6 +200,16 @@ std::string PvsByteReader::string()
         fail("string that is not well-formed UTF-8");
     std::string value(reinterpret_cast<const char*>(_bytes + _pos), size);
     _pos += size;
+    return value;
+}
+
+Aabb PvsByteReader::finiteBox()
+{
+    Aabb value;
+    for (int i = 0; i < 3; ++i)
+        value.min[i] = finiteF64();
+    for (int i = 0; i < 3; ++i)
+        value.max[i] = finiteF64();
     return value;
 }
 

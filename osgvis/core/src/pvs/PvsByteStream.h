@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The primitive encoding of the `.pvs` file (docs/pvs-format.md): little-endian fixed-width
-// integers, IEEE-754 doubles by bit pattern, LEB128 varints and length-prefixed strings, written
+// integers, IEEE-754 doubles by bit pattern, LEB128 varints, length-prefixed strings and boxes, written
 // value by value whatever the host's byte order. The reader checks every byte it takes against the
 // end it was given and names the part of the file it was reading when bytes run out.
 #include <osgVis/core/pvs/PvsFormat.h>
@@ -13,6 +13,9 @@
 
 namespace osgVis::core
 {
+// `count` as the u32 a count field holds; throws "cannot encode .pvs: too many <what>" past it.
+std::uint32_t encodableCount(std::size_t count, const char* what);
+
 class PvsByteWriter
 {
 public:
@@ -22,6 +25,7 @@ public:
     void f64(double value);
     void varint(std::uint64_t value);
     void string(const std::string& value); // u32 byte length, then the bytes
+    void box(const Aabb& value);           // min x, y, z, max x, y, z as f64
     // Overwrites a u64 written earlier at `offset` (a section length known only after its body).
     void patchU64(std::size_t offset, std::uint64_t value);
 
@@ -49,6 +53,7 @@ public:
     double finiteF64(); // throws on NaN or infinity
     std::uint64_t varint();
     std::string string(); // also checks the bytes are well-formed UTF-8
+    Aabb finiteBox();     // six finite f64 (min may still lie above max)
     // Throws unless `count` items of at least `minItemBytes` each fit in the bytes left, so that a
     // corrupted count is reported before anything is allocated for it.
     void requireItems(std::uint64_t count, std::size_t minItemBytes);

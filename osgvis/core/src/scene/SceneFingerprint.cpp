@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/core/scene/SceneFingerprint.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 namespace osgVis::core
 {
@@ -44,6 +48,34 @@ private:
 // candidate and does not change the geometry.
 constexpr std::uint32_t FingerprintFlags = OBJECT_DYNAMIC | OBJECT_TRANSPARENT | OBJECT_ALWAYS_VISIBLE |
                                            OBJECT_NO_AUTO_OCCLUDER | OBJECT_CULL_BACK | OBJECT_CULL_FRONT;
+
+// The grid sceneGeometryFingerprint snaps vertices to: 2^-20 of the scene's largest extent.
+struct VertexGrid
+{
+    Vec3 origin{0.0};
+    double step = 1.0;
+
+    explicit VertexGrid(const Aabb& bounds)
+    {
+        if (bounds.empty())
+            return;
+        const Vec3 extent = bounds.extent();
+        const double largest = std::max({extent.x, extent.y, extent.z});
+        origin = bounds.min;
+        if (largest > 0.0)
+            step = std::ldexp(largest, -20);
+    }
+
+    // note: the marker lies outside the clamped range, so no finite coordinate hashes like NaN.
+    std::uint64_t cell(float coordinate, int axis) const
+    {
+        constexpr double Limit = 4611686018427387904.0; // 2^62
+        if (!std::isfinite(coordinate))
+            return std::uint64_t(1) << 63;
+        const double steps = std::round((double(coordinate) - origin[axis]) / step);
+        return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::clamp(steps, -Limit, Limit)));
+    }
+};
 } // namespace
 
 std::uint64_t sceneFingerprint(const Scene& scene)
@@ -59,6 +91,29 @@ std::uint64_t sceneFingerprint(const Scene& scene)
         }
         hash.add(std::uint64_t(object.triangleCount));
         hash.add(std::uint64_t(object.flags & FingerprintFlags));
+    }
+    return hash.value();
+}
+
+std::uint64_t sceneGeometryFingerprint(const Scene& scene)
+{
+    Fnv1a hash;
+    hash.add(sceneFingerprint(scene));
+    const VertexGrid grid(scene.bounds());
+    for (const SceneObject& object : scene.objects)
+    {
+        const std::uint64_t end = std::uint64_t(object.firstTriangle) + object.triangleCount;
+        if (end > scene.triangles.size())
+            throw std::invalid_argument("sceneGeometryFingerprint: object " + std::to_string(object.id) +
+                                        " has triangles up to " + std::to_string(end) + " but the scene holds " +
+                                        std::to_string(scene.triangles.size()) + " (extracted without triangles?)");
+        for (std::uint64_t t = object.firstTriangle; t < end; ++t)
+        {
+            const Triangle& triangle = scene.triangles[t];
+            for (const Vec3f* vertex : {&triangle.a, &triangle.b, &triangle.c})
+                for (int axis = 0; axis < 3; ++axis)
+                    hash.add(grid.cell((*vertex)[axis], axis));
+        }
     }
     return hash.value();
 }

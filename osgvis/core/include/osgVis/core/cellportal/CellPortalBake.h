@@ -8,6 +8,7 @@
 #include <osgVis/core/cellportal/CellSubdivision.h>
 
 #include <functional>
+#include <string>
 
 namespace osgVis::core
 {
@@ -26,4 +27,10 @@ struct BakeOptions
 using BakeProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options = {}, const BakeProgress& progress = {});
+
+/// The options as a `.pvs` file records them (PvsFile::options), one spelling for equal options:
+/// "min-coverage=0.3 min-face-area=0 min-cell-size=1e-04 max-depth=40 max-cells=200000
+/// stab-budget=50000", numbers as std::to_chars writes them (the shortest text that reads back
+/// exactly). `threads` is left out: the results do not depend on it.
+std::string canonicalBakeOptions(const BakeOptions& options);
 } // namespace osgVis::core

@@ -35,13 +35,14 @@ struct SourceCellVisibility
     VisibleSet cellToObject; ///< capacity = object count: the cell's PVS
 };
 
+/// Figures of the baked data only: no wall-clock time, so that the same bake gives the same bytes
+/// (osgvispvs reports how long it took).
 struct BakeStatistics
 {
     std::uint32_t cells = 0, portals = 0;
     std::uint32_t budgetExceededCells = 0; ///< source cells whose stab-tree search hit its budget
     std::uint64_t stabNodes = 0;
     double averageVisibleCells = 0.0, averagePvsObjects = 0.0;
-    double seconds = 0.0;
 };
 
 struct CellPortalData

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+#include "PvsMerge.h"
+
+#include "PvsToolOptions.h"
+
+#include <osgVis/core/pvs/ViewCellMerge.h>
+
+#include <filesystem>
+#include <iostream>
+
+namespace fs = std::filesystem;
+
+namespace osgVis::pvstool
+{
+namespace
+{
+// The model `pvsFile` names by `modelPath` (relative to its folder), as `output` must name it.
+std::string modelPathFrom(const std::string& pvsFile, const std::string& modelPath, const std::string& output)
+{
+    const fs::path stored(modelPath);
+    const fs::path model = stored.is_absolute() ? stored : fs::absolute(pvsFile).parent_path() / stored;
+    const fs::path relative = model.lexically_normal().lexically_relative(fs::absolute(output).parent_path());
+    return relative.empty() ? model.lexically_normal().generic_string() : relative.generic_string();
+}
+} // namespace
+
+std::string pvsMergeUsage()
+{
+    return "usage: osgvispvs merge IN1.pvs IN2.pvs ... -o OUT.pvs [--complete]\n"
+           "\n"
+           "Joins .pvs files that each hold a range of the view cells of one bake (the same model, method,\n"
+           "options and near distance) into OUT.pvs, cells in ascending index; OUT.pvs names the model of\n"
+           "IN1.pvs relative to its own folder. Refuses files of another model or bake, cell-portal files\n"
+           "and cells that come twice.\n"
+           "\n"
+           "  -o, --output OUT.pvs   the merged file (required; may be one of the inputs)\n"
+           "  --complete             also refuse when a cell of the bake is in no input\n"
+           "  --help                 this text\n"
+           "\n"
+           "Exit status: 0 merged, 1 an input cannot be read or does not belong, or OUT.pvs cannot be\n"
+           "written, 2 bad command line.\n";
+}
+
+PvsMergeOptions parsePvsMergeOptions(const std::vector<std::string>& arguments)
+{
+    PvsMergeOptions o;
+    for (std::size_t i = 0; i < arguments.size(); ++i)
+    {
+        const std::string& arg = arguments[i];
+        if (arg == "--help" || arg == "-h")
+            o.help = true;
+        else if (arg == "-o" || arg == "--output")
+        {
+            if (i + 1 >= arguments.size())
+                throw UsageError(arg + " needs a value");
+            o.output = arguments[++i];
+        }
+        else if (arg == "--complete")
+            o.complete = true;
+        else if (!arg.empty() && arg[0] == '-')
+            throw UsageError("merge: unknown argument '" + arg + "'");
+        else
+            o.inputs.push_back(arg);
+    }
+    if (o.help)
+        return o;
+    if (o.inputs.empty())
+        throw UsageError("merge: missing the .pvs files to merge (osgvispvs merge IN1.pvs IN2.pvs ... -o OUT.pvs)");
+    if (o.output.empty())
+        throw UsageError("merge: missing output path (-o OUT.pvs)");
+    return o;
+}
+
+int runPvsMerge(const std::vector<std::string>& arguments)
+{
+    PvsMergeOptions o;
+    try
+    {
+        o = parsePvsMergeOptions(arguments);
+    }
+    catch (const UsageError& e)
+    {
+        std::cerr << "osgvispvs: " << e.what() << "\n(osgvispvs merge --help for usage)\n";
+        return 2;
+    }
+    if (o.help)
+    {
+        std::cout << pvsMergeUsage();
+        return 0;
+    }
+    try
+    {
+        std::vector<core::PvsFile> ranges;
+        for (const std::string& input : o.inputs)
+            ranges.push_back(core::readPvsFile(input));
+        core::ViewCellMergeOptions options;
+        options.requireAllCells = o.complete;
+        options.inputNames = o.inputs;
+        core::PvsFile merged = core::mergeViewCellPvs(ranges, options);
+        merged.modelPath = modelPathFrom(o.inputs.front(), ranges.front().modelPath, o.output);
+        core::writePvsFile(o.output, merged);
+        const core::ViewCellPvs& cells = merged.viewCells;
+        std::cout << "merged " << o.inputs.size() << " files into " << o.output << ": " << cells.cellIndices.size()
+                  << " of the " << cells.totalCells << " cells of the bake, model '" << merged.modelPath << "'\n";
+        return 0;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "osgvispvs merge: " << e.what() << '\n';
+        return 1;
+    }
+}
+} // namespace osgVis::pvstool
