@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 namespace osgVis::pvstool
 {
@@ -36,6 +37,24 @@ double parseNumber(const std::string& flag, const std::string& text, double lo, 
         throw UsageError(flag + " must lie between " + shortNumber(lo) + " and " + shortNumber(hi) + ", got '" +
                          text + "'");
     return value;
+}
+
+// `count` comma-separated finite numbers ("4,4,2").
+std::vector<double> parseNumbers(const std::string& flag, const std::string& text, std::size_t count)
+{
+    std::vector<double> values;
+    std::size_t start = 0;
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        const std::size_t comma = text.find(',', start);
+        const bool last = k + 1 == count;
+        if (last != (comma == std::string::npos))
+            throw UsageError(flag + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
+        values.push_back(parseNumber(flag, text.substr(start, last ? std::string::npos : comma - start),
+                                     -std::numeric_limits<double>::max(), std::numeric_limits<double>::max()));
+        start = comma + 1;
+    }
+    return values;
 }
 
 // Shortest decimal form: 0.3 and 0.0001 rather than std::to_string's 0.300000 and 0.000100.
@@ -78,6 +97,21 @@ std::string pvsToolUsage()
            std::to_string(defaults.stabBudget) +
            ")\n"
            "  --threads N            worker threads, 0 = all cores (default 0); results do not depend on it\n"
+           "  --method M             cellportal (default) or multifocal: a PVS per view cell, for every\n"
+           "                         eye in the cell (Marsden & Guibas; docs/multifocal.md), no portals\n"
+           "\n"
+           "With --method multifocal, the view cells are (the first that applies):\n"
+           "  --grid X0,Y0,Z0,X1,Y1,Z1  cells of --cell-size over that box\n"
+           "  --walk FILE            the cells of the grid through --cell-origin X,Y,Z (default 0,0,0)\n"
+           "                         that the walk's eyes stand in\n"
+           "  osgVis::Cell markers in the model; else the walk beside the model (its stem + .walk),\n"
+           "  else a grid over the model's bounds.\n"
+           "  --cell-size X,Y,Z      cell edges (default: 1/50 of the model's diagonal each)\n"
+           "  --cells A:B            bake cells A to B-1 of that list only (join ranges with merge)\n"
+           "  --near D               the near-plane reach views will have, at most (default: twice the\n"
+           "                         walk's, else 1/1000 of the diagonal); farther-reaching views keep all\n"
+           "  --plane-resolution N   pixels along each plane's longer side (default 100)\n"
+           "  --planes N             planes per face of a cell (default 3)\n"
            "  --json FILE            also write the statistics as JSON to FILE\n"
            "  --progress             draw the progress bar even when stderr is not a terminal\n"
            "  --help                 this text\n"
@@ -122,6 +156,51 @@ PvsToolOptions parsePvsToolOptions(int argc, char** argv)
             o.bake.stabBudget = std::uint32_t(parseCount(arg, value(), 1, 4000000000u));
         else if (arg == "--threads")
             o.bake.threads = unsigned(parseCount(arg, value(), 0, 4096));
+        else if (arg == "--method")
+        {
+            o.method = value();
+            if (o.method != "cellportal" && o.method != "multifocal")
+                throw UsageError("--method is cellportal or multifocal, got '" + o.method + "'");
+        }
+        else if (arg == "--plane-resolution")
+            o.multifocal.planeResolution = int(parseCount(arg, value(), 1, 4096));
+        else if (arg == "--planes")
+            o.multifocal.planesPerDirection = int(parseCount(arg, value(), 1, 64));
+        else if (arg == "--near")
+            o.nearDistance = parseNumber(arg, value(), 0.0, std::numeric_limits<double>::max());
+        else if (arg == "--grid")
+        {
+            const std::vector<double> v = parseNumbers(arg, value(), 6);
+            if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5]))
+                throw UsageError("--grid needs X0 < X1, Y0 < Y1 and Z0 < Z1");
+            o.grid = core::Aabb(core::Vec3(v[0], v[1], v[2]), core::Vec3(v[3], v[4], v[5]));
+        }
+        else if (arg == "--walk")
+            o.walkFile = value();
+        else if (arg == "--cell-size")
+        {
+            const std::vector<double> v = parseNumbers(arg, value(), 3);
+            if (!(v[0] > 0.0 && v[1] > 0.0 && v[2] > 0.0))
+                throw UsageError("--cell-size must be positive along every axis");
+            o.cellSize = core::Vec3(v[0], v[1], v[2]);
+        }
+        else if (arg == "--cell-origin")
+        {
+            const std::vector<double> v = parseNumbers(arg, value(), 3);
+            o.cellOrigin = core::Vec3(v[0], v[1], v[2]);
+        }
+        else if (arg == "--cells")
+        {
+            const std::string range = value();
+            const std::size_t colon = range.find(':');
+            if (colon == std::string::npos)
+                throw UsageError("--cells expects A:B (cells A to B-1), got '" + range + "'");
+            const std::uint64_t first = parseCount(arg, range.substr(0, colon), 0, 4000000000u);
+            const std::uint64_t end = parseCount(arg, range.substr(colon + 1), 0, 4000000000u);
+            if (first >= end)
+                throw UsageError("--cells A:B needs A < B, got '" + range + "'");
+            o.cellRange = std::make_pair(std::uint32_t(first), std::uint32_t(end));
+        }
         else if (!arg.empty() && arg[0] == '-')
             throw UsageError("unknown argument '" + arg + "'");
         else if (!o.modelFile.empty())
@@ -135,6 +214,11 @@ PvsToolOptions parsePvsToolOptions(int argc, char** argv)
         throw UsageError("missing the model to bake (osgvispvs MODEL -o OUT.pvs)");
     if (o.pvsFile.empty())
         throw UsageError("missing output path (-o OUT.pvs)");
+    const bool viewCellOptions = o.grid || !o.walkFile.empty() || o.cellSize.x > 0.0 || o.cellRange || o.nearDistance;
+    if (o.method != "multifocal" && viewCellOptions)
+        throw UsageError("--grid, --walk, --cell-size, --cells and --near go with --method multifocal");
+    if (o.grid && !o.walkFile.empty())
+        throw UsageError("give --grid or --walk, not both");
     return o;
 }
 } // namespace osgVis::pvstool

@@ -3,6 +3,9 @@
 // Command line of osgvispvs: the model to bake, where the .pvs goes, and the bake's knobs. Parsing
 // only: nothing here reads a file.
 #include <osgVis/core/cellportal/CellPortalBake.h>
+#include <osgVis/core/multifocal/VolumeVisibility.h>
+
+#include <optional>
 
 #include <stdexcept>
 #include <string>
@@ -21,6 +24,15 @@ struct PvsToolOptions
     std::string pvsFile;        // -o / --output
     std::string jsonFile;       // --json FILE: the statistics as JSON
     core::BakeOptions bake;     // --min-coverage, --min-face-area, --min-cell-size, --max-cells, --stab-budget, --threads
+    std::string method = "cellportal"; // --method cellportal|multifocal
+    // --method multifocal: the view cells and their planes.
+    core::MultifocalOptions multifocal; // --plane-resolution, --planes
+    std::optional<double> nearDistance; // --near D: the near-plane reach assumed
+    std::optional<core::Aabb> grid;     // --grid X0,Y0,Z0,X1,Y1,Z1: cells over that box
+    std::string walkFile;               // --walk FILE: the cells the walk passes through
+    core::Vec3 cellSize{0.0};           // --cell-size X,Y,Z; 0: 1/50 of the model's diagonal
+    core::Vec3 cellOrigin{0.0};         // --cell-origin X,Y,Z: a corner of the walk's grid
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> cellRange; // --cells A:B (B excluded)
     bool forceProgress = false; // --progress: draw the bar even when stderr is no terminal
     bool help = false;          // --help
     bool version = false;       // --version

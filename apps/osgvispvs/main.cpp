@@ -7,14 +7,12 @@
 #include "BakeSummary.h"
 #include "PvsMerge.h"
 #include "PvsToolOptions.h"
+#include "ToolFiles.h"
+#include "ViewCellBakeCommand.h"
 
-#include <osgVis/ModelRepair>
-#include <osgVis/SceneExtractor>
 #include <osgVis/Version>
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/core/scene/SceneFingerprint.h>
-
-#include <osgDB/ReadFile>
 
 #include <unistd.h>
 
@@ -29,60 +27,11 @@ using namespace osgVis::pvstool;
 
 namespace
 {
-// A file the tool cannot produce; main prints it and exits with 1.
-struct ToolError : std::runtime_error
-{
-    using std::runtime_error::runtime_error;
-};
-
-// Fails before a long bake, not after it: the output's folder must exist and take a new file.
-void checkWritable(const std::string& path, const char* what)
-{
-    const fs::path target(path);
-    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    std::error_code error;
-    if (!fs::is_directory(folder, error))
-        throw ToolError(std::string("cannot write ") + what + " '" + path + "': folder '" + folder.string() +
-                        "' does not exist");
-    if (fs::is_directory(target, error))
-        throw ToolError(std::string("cannot write ") + what + " '" + path + "': it is a folder");
-    const fs::path probe = target.string() + ".osgvispvs-probe";
-    if (!std::ofstream(probe))
-        throw ToolError(std::string("cannot write ") + what + " '" + path + "': no permission in folder '" +
-                        folder.string() + "'");
-    fs::remove(probe, error);
-}
-
-// The model as the .pvs names it: relative to the .pvs's folder, so both can move together.
-std::string modelPathFromPvs(const std::string& modelFile, const std::string& pvsFile)
-{
-    const fs::path model = fs::absolute(modelFile);
-    const fs::path relative = fs::relative(model, fs::absolute(pvsFile).parent_path());
-    return relative.empty() ? model.generic_string() : relative.generic_string();
-}
-
 int bake(const PvsToolOptions& o)
 {
     std::error_code error;
-    if (!fs::exists(o.modelFile, error))
-        throw ToolError("model file '" + o.modelFile + "' does not exist");
-    checkWritable(o.pvsFile, "the .pvs file");
-    if (!o.jsonFile.empty())
-        checkWritable(o.jsonFile, "the JSON file");
-
-    osg::ref_ptr<osg::Node> model = osgDB::readRefNodeFile(o.modelFile);
-    if (!model)
-        throw ToolError("cannot read model '" + o.modelFile +
-                        "' (not a model osgDB can read, or no plugin for its extension)");
-    // The same repairs as the .pvs plugin and the apps make, so the bake sees the drawn scene.
-    if (const std::string repaired = osgVis::repairLoadedModel(*model, o.modelFile); !repaired.empty())
-        std::cerr << "model '" << o.modelFile << "': " << repaired << "\n";
-    osgVis::ExtractionOptions extraction;
-    extraction.keepTriangles = true; // the subdivision splits along the model's opaque faces
-    const osg::ref_ptr<osgVis::ExtractedScene> extracted = osgVis::extractScene(*model, extraction);
-    const osgVis::core::Scene& scene = extracted->scene;
-    if (scene.objects.empty())
-        throw ToolError("model '" + o.modelFile + "' holds no drawable objects: nothing to bake");
+    const LoadedModel loaded = loadModelToBake(o);
+    const osgVis::core::Scene& scene = loaded.extracted->scene;
     std::uint64_t triangles = 0;
     for (const osgVis::core::SceneObject& object : scene.objects)
         triangles += object.triangleCount;
@@ -153,7 +102,7 @@ int main(int argc, char** argv)
     }
     try
     {
-        return bake(options);
+        return options.method == "multifocal" ? bakeViewCells(options) : bake(options);
     }
     catch (const std::exception& e)
     {

@@ -3,9 +3,11 @@
 //
 // Reading x.pvs gives the model the file names, under an osgVis::VisibilityGroup named "x.pvs":
 // - the .pvs reads and was baked for the model → modes "cellportal", its data registered with
-//   core::registerBakedCellPortalData, description "osgVis:pvs-trusted";
+//   core::registerBakedCellPortalData, description "osgVis:pvs-trusted"; a file of view cells only
+//   (osgvispvs --method multifocal) → modes "multifocal", its cells registered with
+//   core::registerBakedViewCells;
 // - the .pvs was baked for another model (its geometry fingerprint, or for a version 1 file its
-//   fingerprint, differs) or holds no cell-portal data → modes "frustum", a warning, description
+//   fingerprint, differs) or holds neither kind of data → modes "frustum", a warning, description
 //   "osgVis:pvs-untrusted: <reason>";
 // - the .pvs is corrupt, truncated or of a newer version → the model saved beside it (x.osgb,
 //   x.osgt, x.ive, x.osg) under "frustum" with a warning, or an error when there is none;
@@ -19,6 +21,7 @@
 #include <osgVis/ModelRepair>
 #include <osgVis/SceneExtractor>
 #include <osgVis/core/cellportal/CellPortalModule.h>
+#include <osgVis/core/multifocal/MultifocalModule.h>
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/core/scene/SceneFingerprint.h>
 
@@ -84,9 +87,9 @@ osgDB::ReaderWriter::ReadResult showWithModel(core::PvsFile&& pvs, const std::st
         return osgDB::ReaderWriter::ReadResult("osgVis: cannot read model '" + modelFile + "' named by " + pvsFile);
     repairLoadedModel(*model, modelFile); // as osgvispvs did before baking
     const std::string name = osgDB::getSimpleFileName(pvsFile);
-    if (!pvs.hasCellPortal)
+    if (!pvs.hasCellPortal && !pvs.hasViewCells)
     {
-        const std::string reason = "holds no cell-portal data (method '" + pvs.method + "')";
+        const std::string reason = "holds neither cell-portal data nor view cells (method '" + pvs.method + "')";
         OSG_WARN << "osgVis: " << pvsFile << " " << reason << "; showing " << modelFile << " with frustum culling only"
                  << std::endl;
         return makeUntrustedGroup(*model, name, reason);
@@ -98,6 +101,17 @@ osgDB::ReaderWriter::ReadResult showWithModel(core::PvsFile&& pvs, const std::st
                  << "; showing the model with frustum culling only. Bake it again with osgvispvs." << std::endl;
         return makeUntrustedGroup(*model, name, mismatch);
     }
+    if (pvs.hasViewCells)
+    {
+        auto cells = std::make_shared<core::BakedViewCells>();
+        cells->fingerprint = pvs.data.fingerprint;
+        cells->objectCount = pvs.data.objectCount;
+        cells->nearDistance = pvs.nearDistance;
+        cells->cells = std::move(pvs.viewCells);
+        core::registerBakedViewCells(std::move(cells));
+    }
+    if (!pvs.hasCellPortal)
+        return makeTrustedGroup(*model, name, "multifocal");
     core::registerBakedCellPortalData(std::make_shared<const core::CellPortalData>(std::move(pvs.data)));
     return makeTrustedGroup(*model, name);
 }

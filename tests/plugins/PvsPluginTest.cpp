@@ -7,6 +7,7 @@
 #include <osgVis/SceneExtractor>
 #include <osgVis/VisibilityGroup>
 #include <osgVis/core/cellportal/CellPortalModule.h>
+#include <osgVis/core/multifocal/MultifocalModule.h>
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/core/scene/SceneFingerprint.h>
 #include <osgVis/gen/Generator.h>
@@ -221,11 +222,12 @@ TEST_F(PvsPlugin, Version1FileIsCheckedByItsFingerprint)
     readUntrusted(path("x.pvs"), "baked for another model (fingerprint 0x");
 }
 
-TEST_F(PvsPlugin, PvsWithoutCellPortalDataShowsFrustumOnly)
+TEST_F(PvsPlugin, ViewCellsAloneShowTheModelUnderMultifocalWithTheCellsRegistered)
 {
     writeOffice();
     osgVis::core::PvsFile pvs = osgVis::core::readPvsFile(path("x.pvs"));
     pvs.method = "multifocal";
+    pvs.nearDistance = 0.25;
     pvs.hasCellPortal = false;
     pvs.data.graph = {};
     pvs.data.sources.clear();
@@ -235,9 +237,25 @@ TEST_F(PvsPlugin, PvsWithoutCellPortalDataShowsFrustumOnly)
     pvs.viewCells.cells = {osgVis::core::Aabb(osgVis::core::Vec3(0.0), osgVis::core::Vec3(1.0))};
     pvs.viewCells.pvs = {osgVis::core::VisibleSet(pvs.data.objectCount, true)};
     osgVis::core::writePvsFile(path("x.pvs"), pvs);
-    const osg::ref_ptr<osgVis::VisibilityGroup> group = readUntrusted(path("x.pvs"), "holds no cell-portal data");
+    const osg::ref_ptr<osgVis::VisibilityGroup> group = readGroup(path("x.pvs"));
     ASSERT_TRUE(group.valid());
-    EXPECT_EQ(description(*group), "osgVis:pvs-untrusted: holds no cell-portal data (method 'multifocal')");
+    EXPECT_EQ(group->getModes(), "multifocal");
+    EXPECT_EQ(description(*group), "osgVis:pvs-trusted");
+    const auto cells = osgVis::core::findBakedViewCells(pvs.data.fingerprint);
+    ASSERT_TRUE(cells);
+    EXPECT_EQ(cells->objectCount, pvs.data.objectCount);
+    EXPECT_EQ(cells->nearDistance, 0.25);
+    ASSERT_EQ(cells->cells.cells.size(), 1u);
+
+    // Neither kind of data: the model under frustum culling.
+    pvs.hasViewCells = false;
+    pvs.viewCells = {};
+    osgVis::core::writePvsFile(path("x.pvs"), pvs);
+    const osg::ref_ptr<osgVis::VisibilityGroup> empty =
+        readUntrusted(path("x.pvs"), "holds neither cell-portal data nor view cells");
+    ASSERT_TRUE(empty.valid());
+    EXPECT_EQ(description(*empty),
+              "osgVis:pvs-untrusted: holds neither cell-portal data nor view cells (method 'multifocal')");
 }
 
 TEST_F(PvsPlugin, TruncatedPvsShowsTheModelBesideWithFrustumOnly)

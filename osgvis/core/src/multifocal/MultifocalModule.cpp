@@ -3,9 +3,12 @@
 // it (their first model, with cells made on demand instead of in a bake).
 #include <osgVis/core/multifocal/MultifocalModule.h>
 
+#include <osgVis/core/scene/SceneFingerprint.h>
+
 #include <cmath>
 #include <list>
 #include <map>
+#include <mutex>
 #include <tuple>
 
 namespace osgVis::core
@@ -19,7 +22,36 @@ struct CellAnswer
     VisibleSet objects;
     double nearReach = 0.0; ///< the near-plane reach it assumed
 };
+
+struct BakedStore
+{
+    std::mutex mutex;
+    std::map<std::uint64_t, std::shared_ptr<const BakedViewCells>> byFingerprint;
+};
+
+BakedStore& bakedStore()
+{
+    static BakedStore store;
+    return store;
+}
 } // namespace
+
+void registerBakedViewCells(std::shared_ptr<const BakedViewCells> cells)
+{
+    if (!cells)
+        return;
+    BakedStore& store = bakedStore();
+    const std::lock_guard<std::mutex> lock(store.mutex);
+    store.byFingerprint[cells->fingerprint] = std::move(cells);
+}
+
+std::shared_ptr<const BakedViewCells> findBakedViewCells(std::uint64_t fingerprint)
+{
+    BakedStore& store = bakedStore();
+    const std::lock_guard<std::mutex> lock(store.mutex);
+    const auto found = store.byFingerprint.find(fingerprint);
+    return found == store.byFingerprint.end() ? nullptr : found->second;
+}
 
 struct MultifocalModule::Impl
 {
@@ -29,6 +61,8 @@ struct MultifocalModule::Impl
     std::list<CellKey> recent; ///< most recent first
     std::map<CellKey, std::pair<CellAnswer, std::list<CellKey>::iterator>> cells;
     std::size_t computed = 0;
+    std::shared_ptr<const BakedViewCells> baked;
+    std::size_t outsideBaked = 0;
 };
 
 MultifocalModule::MultifocalModule(const MultifocalModuleOptions& options) : _impl(std::make_unique<Impl>())
@@ -42,6 +76,10 @@ void MultifocalModule::setScene(const Scene& scene)
 {
     _scene = &scene;
     _impl->occluders = volumeOccluders(scene);
+    _impl->baked = findBakedViewCells(sceneFingerprint(scene));
+    if (_impl->baked && _impl->baked->objectCount != scene.objects.size())
+        _impl->baked.reset();
+    _impl->outsideBaked = 0;
     _impl->cells.clear();
     _impl->recent.clear();
     const Aabb bounds = scene.bounds();
@@ -63,11 +101,30 @@ std::size_t MultifocalModule::cellsComputed() const
     return _impl->computed;
 }
 
+std::shared_ptr<const BakedViewCells> MultifocalModule::bakedCells() const
+{
+    return _impl->baked;
+}
+
+std::size_t MultifocalModule::viewsOutsideBakedCells() const
+{
+    return _impl->outsideBaked;
+}
+
 void MultifocalModule::cull(const View& view, VisibleSet& visible)
 {
     if (!_scene || view.orthographic || !std::isfinite(view.eye.x + view.eye.y + view.eye.z))
         return;
     Impl& m = *_impl;
+    if (m.baked)
+    {
+        const std::uint32_t cell = m.baked->cells.locate(view.eye);
+        if (cell == NoCell || nearPlaneReach(view) > m.baked->nearDistance)
+            ++m.outsideBaked;
+        else
+            visible.intersectWith(m.baked->cells.pvs[cell]);
+        return;
+    }
     const Vec3 index = glm::floor((view.eye - m.options.cellOrigin) / m.cellSize);
     const CellKey key{(long long)index.x, (long long)index.y, (long long)index.z};
     const double reach = nearPlaneReach(view);

@@ -2,12 +2,16 @@
 #pragma once
 /// @file
 /// Mode `multifocal`: visibility from volumes of viewpoints (Marsden & Guibas, §6). The eye's view
-/// cell gives the answer — its PVS, computed by computeVolumePvs for the cell, kept while the eye
-/// stays in it — so every view of an eye in the cell keeps everything visible from anywhere in it.
-/// Cells form a grid (MultifocalModuleOptions::cellSize); region queries (cullRegion, and with it
-/// AsyncVisibility) compute the PVS of the region's own box. Orthographic views keep everything.
+/// cell gives the answer, so every view of an eye in the cell keeps everything visible from
+/// anywhere in it. With baked view cells registered for the scene (a `.pvs` file of
+/// `osgvispvs --method multifocal`, read by the .pvs plugin) the cell is the baked one holding the
+/// eye, and an eye outside every cell keeps everything. Without, cells form a grid
+/// (MultifocalModuleOptions::cellSize) whose PVS are computed by computeVolumePvs as the eye
+/// enters them and kept while it stays. Region queries (cullRegion, and with it AsyncVisibility)
+/// compute the PVS of the region's own box. Orthographic views keep everything.
 #include <osgVis/core/module/VisibilityModule.h>
 #include <osgVis/core/multifocal/VolumeVisibility.h>
+#include <osgVis/core/pvs/ViewCellPvs.h>
 
 #include <memory>
 
@@ -23,6 +27,21 @@ struct MultifocalModuleOptions
     /// Cell answers kept (least recently used ones go).
     std::size_t cachedCells = 64;
 };
+
+/// View cells baked for a model (sceneFingerprint and object count) and the near-plane reach the
+/// bake assumed: a view reaching farther keeps everything.
+struct BakedViewCells
+{
+    std::uint64_t fingerprint = 0;
+    std::uint32_t objectCount = 0;
+    double nearDistance = 0.0;
+    ViewCellPvs cells;
+};
+
+/// Process-wide store by fingerprint: the `.pvs` reader registers what it trusted, so that any
+/// MultifocalModule later given that scene uses it. Thread-safe.
+void registerBakedViewCells(std::shared_ptr<const BakedViewCells> cells);
+std::shared_ptr<const BakedViewCells> findBakedViewCells(std::uint64_t fingerprint);
 
 class MultifocalModule : public VisibilityModule
 {
@@ -44,6 +63,11 @@ public:
     Aabb cellOf(const Vec3& eye) const;
     /// Cell PVS computed so far by cull (not counting region queries).
     std::size_t cellsComputed() const;
+    /// The baked cells the last setScene found registered for its scene, or null.
+    std::shared_ptr<const BakedViewCells> bakedCells() const;
+    /// Views that kept everything because no baked cell held the eye or their near plane reached
+    /// farther than the bake assumed.
+    std::size_t viewsOutsideBakedCells() const;
 
 private:
     struct Impl;

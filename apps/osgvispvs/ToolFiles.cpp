@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#include "ToolFiles.h"
+
+#include <osgVis/ModelRepair>
+
+#include <osgDB/ReadFile>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace fs = std::filesystem;
+
+namespace osgVis::pvstool
+{
+void checkWritable(const std::string& path, const char* what)
+{
+    const fs::path target(path);
+    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    std::error_code error;
+    if (!fs::is_directory(folder, error))
+        throw ToolError(std::string("cannot write ") + what + " '" + path + "': folder '" + folder.string() +
+                        "' does not exist");
+    if (fs::is_directory(target, error))
+        throw ToolError(std::string("cannot write ") + what + " '" + path + "': it is a folder");
+    const fs::path probe = target.string() + ".osgvispvs-probe";
+    if (!std::ofstream(probe))
+        throw ToolError(std::string("cannot write ") + what + " '" + path + "': no permission in folder '" +
+                        folder.string() + "'");
+    fs::remove(probe, error);
+}
+
+std::string modelPathFromPvs(const std::string& modelFile, const std::string& pvsFile)
+{
+    const fs::path model = fs::absolute(modelFile);
+    const fs::path relative = fs::relative(model, fs::absolute(pvsFile).parent_path());
+    return relative.empty() ? model.generic_string() : relative.generic_string();
+}
+
+LoadedModel loadModelToBake(const PvsToolOptions& o)
+{
+    std::error_code error;
+    if (!fs::exists(o.modelFile, error))
+        throw ToolError("model file '" + o.modelFile + "' does not exist");
+    checkWritable(o.pvsFile, "the .pvs file");
+    if (!o.jsonFile.empty())
+        checkWritable(o.jsonFile, "the JSON file");
+    LoadedModel loaded;
+    loaded.model = osgDB::readRefNodeFile(o.modelFile);
+    if (!loaded.model)
+        throw ToolError("cannot read model '" + o.modelFile +
+                        "' (not a model osgDB can read, or no plugin for its extension)");
+    if (const std::string repaired = repairLoadedModel(*loaded.model, o.modelFile); !repaired.empty())
+        std::cerr << "model '" << o.modelFile << "': " << repaired << "\n";
+    ExtractionOptions extraction;
+    extraction.keepTriangles = true; // both bakes work on the model's faces
+    loaded.extracted = extractScene(*loaded.model, extraction);
+    if (loaded.extracted->scene.objects.empty())
+        throw ToolError("model '" + o.modelFile + "' holds no drawable objects: nothing to bake");
+    return loaded;
+}
+} // namespace osgVis::pvstool
