@@ -19,12 +19,12 @@
 #include <osgVis/gen/Forest.h>
 
 #include "Circle.h"
+#include "NameTable.h"
 #include "Palette.h"
 #include "Scenes.h"
 #include "WalkPath.h"
 
 #include <algorithm>
-#include <stdexcept>
 
 namespace osgVis::gen
 {
@@ -40,12 +40,7 @@ constexpr double walkMargin = 6.0;                        // the walk's loop kee
 constexpr double turnOffset = 2.0;                        // corners of the walk are cut this far before and after
 constexpr double volumeDistance = 2.0, volumeEdge = 0.02; // in tree heights
 
-struct LayoutName
-{
-    ForestLayout layout;
-    const char* name;
-};
-constexpr LayoutName layoutNames[] = {
+constexpr Named<ForestLayout> layoutNames[] = {
     {ForestLayout::Single, "single"}, {ForestLayout::Line, "line"}, {ForestLayout::Dense, "dense"}};
 
 // One tree in its own coordinates: trunk foot at the origin, z up.
@@ -256,26 +251,17 @@ Mesh partMesh(const char* name, const osg::Vec4& colour, double densityScale)
 
 ForestLayout parseForestLayout(const std::string& name)
 {
-    for (const LayoutName& l : layoutNames)
-        if (name == l.name)
-            return l.layout;
-    throw std::invalid_argument("unknown forest layout '" + name + "' (known: single, line, dense)");
+    return parseNamed(layoutNames, name, "forest layout");
 }
 
 const char* forestLayoutName(ForestLayout layout)
 {
-    for (const LayoutName& l : layoutNames)
-        if (layout == l.layout)
-            return l.name;
-    return "unknown";
+    return nameOf(layoutNames, layout);
 }
 
 std::vector<std::string> forestLayoutNames()
 {
-    std::vector<std::string> names;
-    for (const LayoutName& l : layoutNames)
-        names.emplace_back(l.name);
-    return names;
+    return namesIn(layoutNames);
 }
 
 unsigned forestTreeCount(ForestLayout layout)

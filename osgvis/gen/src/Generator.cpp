@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/gen/Generator.h>
 
+#include "NameTable.h"
 #include "Scenes.h"
 
 #include <osg/LightModel>
@@ -12,16 +13,11 @@ namespace osgVis::gen
 {
 namespace
 {
-struct KindName
-{
-    SceneKind kind;
-    const char* name;
-};
-constexpr KindName kindNames[] = {{SceneKind::Office, "office"},
-                                  {SceneKind::City, "city"},
-                                  {SceneKind::Tetra, "tetra"},
-                                  {SceneKind::Floor, "floor"},
-                                  {SceneKind::Forest, "forest"}};
+constexpr Named<SceneKind> kindNames[] = {{SceneKind::Office, "office"},
+                                          {SceneKind::City, "city"},
+                                          {SceneKind::Tetra, "tetra"},
+                                          {SceneKind::Floor, "floor"},
+                                          {SceneKind::Forest, "forest"}};
 
 // Under a plain headlight, floors and ceilings seen edge-on get no diffuse light and draw black; a
 // global ambient term keeps every surface readable in screenshots, and two-sided lighting lights
@@ -104,26 +100,17 @@ GeneratedScene generate(const GenerateOptions& options)
 
 SceneKind parseSceneKind(const std::string& name)
 {
-    for (const KindName& k : kindNames)
-        if (name == k.name)
-            return k.kind;
-    throw std::invalid_argument("unknown scene kind '" + name + "' (known: office, city, tetra, floor, forest)");
+    return parseNamed(kindNames, name, "scene kind");
 }
 
 const char* sceneKindName(SceneKind kind)
 {
-    for (const KindName& k : kindNames)
-        if (kind == k.kind)
-            return k.name;
-    return "unknown";
+    return nameOf(kindNames, kind);
 }
 
 std::vector<std::string> sceneKindNames()
 {
-    std::vector<std::string> names;
-    for (const KindName& k : kindNames)
-        names.emplace_back(k.name);
-    return names;
+    return namesIn(kindNames);
 }
 
 GeneratedScene adversarialScene(const std::string& name)
