@@ -68,14 +68,6 @@ osg::ref_ptr<osg::Group> wallWithHole()
     return root;
 }
 
-std::vector<osg::ref_ptr<osg::Drawable>> drawablesOf(const VolumeOracle& oracle)
-{
-    std::vector<osg::ref_ptr<osg::Drawable>> drawables;
-    for (const auto& object : oracle.objects())
-        drawables.push_back(object.drawable);
-    return drawables;
-}
-
 std::uint32_t indexOf(const VolumeOracle& oracle, const std::string& name)
 {
     for (std::uint32_t i = 0; i < oracle.objects().size(); ++i)
