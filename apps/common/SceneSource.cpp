@@ -182,6 +182,12 @@ LoadedScene loadScene(const SceneRequest& options)
         {
             gen::GenerateOptions generateOptions;
             generateOptions.kind = gen::parseSceneKind(options.generateKind);
+            if (!options.forestLayout.empty())
+            {
+                if (generateOptions.kind != gen::SceneKind::Forest)
+                    throw SceneError("--layout goes with --generate forest only");
+                generateOptions.forestLayout = gen::parseForestLayout(options.forestLayout);
+            }
             generateOptions.triangles = options.triangles;
             generateOptions.seed = options.seed;
             generated = gen::generate(generateOptions);
@@ -193,7 +199,8 @@ LoadedScene loadScene(const SceneRequest& options)
         result.model = generated.root;
         result.walk = std::move(generated.walk);
         result.walkSource = "generated";
-        result.name = "generated " + options.generateKind + " (" + std::to_string(options.triangles) +
+        const std::string layout = options.forestLayout.empty() ? "" : " " + options.forestLayout;
+        result.name = "generated " + options.generateKind + layout + " (" + std::to_string(options.triangles) +
                       " triangles, seed " + std::to_string(options.seed) + ")";
     }
     else

@@ -30,6 +30,7 @@ struct SceneRequest
     std::string generateKind;         // a generator kind ("office", "city", ...) or empty
     std::uint64_t triangles = 200000; // size knob of a generated scene
     std::uint32_t seed = 1;           // seed of a generated scene
+    std::string forestLayout;         // with generateKind "forest": single, line or dense (empty: dense)
     // A walk file, "auto" (through the model's free space), "orbit" (around it), or empty: SCENE's
     // stem + ".walk" if there is one, the generator's walk with generateKind, else "auto" (an orbit
     // when no eye can be found in the model).

@@ -92,7 +92,8 @@ void parseSize(const std::string& text, unsigned& width, unsigned& height)
 
 std::string benchUsage()
 {
-    return "usage: osgvisbench (--scene FILE | --generate office|city|floor|tetra [--triangles N] [--seed S])\n"
+    return "usage: osgvisbench (--scene FILE | --generate office|city|floor|tetra|forest [--layout L]\n"
+           "                   [--triangles N] [--seed S])\n"
            "                   [--walk FILE|auto|orbit] [--save-walk FILE] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
            "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
            "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8]\n"
@@ -189,6 +190,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.sceneFile = value();
         else if (flag == "--generate")
             options.generateKind = value();
+        else if (flag == "--layout")
+            options.forestLayout = value();
         else if (flag == "--triangles")
             options.triangles = parseUnsigned(flag, value());
         else if (flag == "--seed")

@@ -23,7 +23,8 @@ constexpr std::size_t MaxMaskSweepFrames = 200000;
 struct BenchOptions
 {
     std::string sceneFile;            // --scene FILE (any format osgDB reads)
-    std::string generateKind;         // --generate office|city|tetra (instead of --scene)
+    std::string generateKind;         // --generate office|city|floor|tetra|forest (instead of --scene)
+    std::string forestLayout;         // --layout single|line|dense, with --generate forest
     std::uint64_t triangles = 100000; // --triangles N, with --generate
     std::uint32_t seed = 1;           // --seed S, with --generate
     std::string walkFile;             // --walk FILE; empty: FILE.walk beside the scene, else automatic

@@ -31,6 +31,7 @@ apps::LoadedScene loadBenchScene(const BenchOptions& options)
     source.generateKind = options.generateKind;
     source.triangles = options.triangles;
     source.seed = options.seed;
+    source.forestLayout = options.forestLayout;
     source.walkPath = options.walkFile;
     source.width = options.width;
     source.height = options.height;

@@ -15,7 +15,7 @@
 namespace
 {
 const char* usage =
-    "usage: osgvisgen --kind office|city|tetra|floor [--triangles N] [--seed S] -o SCENE\n"
+    "usage: osgvisgen --kind office|city|tetra|floor|forest [--layout L] [--triangles N] [--seed S] -o SCENE\n"
     "       osgvisgen --adversarial NAME -o SCENE\n"
     "       osgvisgen --list | --help\n"
     "\n"
@@ -24,9 +24,13 @@ const char* usage =
     "\n"
     "  --kind K          office (furnished rooms and corridors), city (streets and buildings),\n"
     "                    tetra (tetrahedra on a plane) or floor (one office storey of 204 rooms, about\n"
-    "                    2300 objects whatever N, walked along its corridors only)\n"
+    "                    2300 objects whatever N, walked along its corridors only) or forest (trees of\n"
+    "                    closed surfaces: trunk, branches and leaf clumps each an object)\n"
+    "  --layout L        forest only: single (one tree), line (six in a row) or dense (32 on a grid;\n"
+    "                    the default); the layout does not depend on N\n"
     "  --triangles N     triangle budget, 1000 to 50000000 (floor: 60000 to 50000000; default 100000,\n"
-    "                    floor 300000); only the tessellation of floor changes; the scene lands within 10%\n"
+    "                    floor 300000; forest 12000 a tree: 12000, 72000, 385000); only the tessellation\n"
+    "                    of floor and forest changes; the scene lands within 10%\n"
     "  --seed S          random seed, 0 to 4294967295 (default 1); the same seed gives the same bytes\n"
     "  --adversarial NAME  one of the small adversarial scenes instead (see --list)\n"
     "  -o, --output SCENE  output path (required)\n"
@@ -67,6 +71,7 @@ struct Options
 {
     std::optional<std::string> kind;
     std::optional<std::string> adversarial;
+    std::optional<std::string> layout;      // forest only
     std::optional<std::uint64_t> triangles; // default per kind
     std::uint32_t seed = 1;
     std::string output;
@@ -94,6 +99,8 @@ Options parse(int argc, char** argv)
             o.kind = value();
         else if (arg == "--adversarial")
             o.adversarial = value();
+        else if (arg == "--layout")
+            o.layout = value();
         else if (arg == "--triangles")
             o.triangles = parseUnsigned(arg, value(), osgVis::gen::minTriangles, osgVis::gen::maxTriangles);
         else if (arg == "--seed")
@@ -111,6 +118,8 @@ Options parse(int argc, char** argv)
         throw UsageError("missing --kind (or --adversarial)");
     if (o.output.empty())
         throw UsageError("missing output path (-o SCENE)");
+    if (o.layout && (!o.kind || *o.kind != "forest"))
+        throw UsageError("--layout goes with --kind forest only");
     return o;
 }
 
@@ -127,6 +136,9 @@ int run(const Options& o)
         std::cout << "kinds:";
         for (const std::string& k : gen::sceneKindNames())
             std::cout << ' ' << k;
+        std::cout << "\nforest layouts:";
+        for (const std::string& l : gen::forestLayoutNames())
+            std::cout << ' ' << l;
         std::cout << "\nadversarial:";
         for (const std::string& n : gen::adversarialSceneNames())
             std::cout << ' ' << n;
@@ -146,10 +158,15 @@ int run(const Options& o)
     {
         gen::GenerateOptions options;
         options.kind = gen::parseSceneKind(*o.kind);
-        options.triangles = o.triangles ? *o.triangles : gen::defaultTriangles(options.kind);
+        if (o.layout)
+            options.forestLayout = gen::parseForestLayout(*o.layout);
+        options.triangles = o.triangles ? *o.triangles : gen::defaultTriangles(options.kind, options.forestLayout);
         options.seed = o.seed;
         scene = gen::generate(options);
-        what = *o.kind + " seed " + std::to_string(o.seed);
+        what = *o.kind +
+               (options.kind == gen::SceneKind::Forest ? std::string(" ") + gen::forestLayoutName(options.forestLayout)
+                                                       : "") +
+               " seed " + std::to_string(o.seed);
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -71,6 +71,8 @@ ViewerOptions parseOptions(int argc, char** argv)
             parseSize(value(), options.width, options.height);
         else if (arg == "--generate")
             options.generateKind = value();
+        else if (arg == "--layout")
+            options.forestLayout = value();
         else if (arg == "--triangles")
             options.triangles = parseUnsigned(arg, value());
         else if (arg == "--seed")
@@ -101,7 +103,8 @@ ViewerOptions parseOptions(int argc, char** argv)
     if (!options.generateKind.empty() && !options.scenePath.empty())
         throw OptionsError("give either a SCENE file or --generate, not both");
     if (options.generateKind.empty() && options.scenePath.empty())
-        throw OptionsError("no scene given: pass a model file or --generate office|city|floor|tetra (see --help)");
+        throw OptionsError(
+            "no scene given: pass a model file or --generate office|city|floor|tetra|forest (see --help)");
     // A baked .pvs is there to be walked with its cells and portals.
     const std::string pvs = ".pvs";
     if (!modeGiven && options.scenePath.size() > pvs.size() &&
@@ -115,7 +118,7 @@ std::string usageText(const std::string& programName)
     std::ostringstream out;
     out << "usage: " << programName
         << " [SCENE] [--mode M] [--walk FILE|auto|orbit] [--record FILE] [--headless OUTDIR] [--size WxH]\n"
-           "       [--generate office|city|floor|tetra] [--triangles N] [--seed S]\n"
+           "       [--generate office|city|floor|tetra|forest [--layout L]] [--triangles N] [--seed S]\n"
            "       [--threading MODEL] [--async on|off] [--help]\n"
            "\n"
            "Walks through SCENE (any model OpenSceneGraph reads, or a .pvs baked by osgvispvs: the model it\n"
@@ -131,7 +134,8 @@ std::string usageText(const std::string& programName)
            "  --headless OUTDIR  render every view of the walk offscreen to OUTDIR/frame-NNNN.png,\n"
            "                     map-NNNN.png and report.{json,txt}; needs an X display (xvfb-run)\n"
            "  --size WxH         window / image size (default: the walk's size)\n"
-           "  --generate KIND    generate an office, city or tetra scene instead of loading one\n"
+           "  --generate KIND    generate an office, city, floor, tetra or forest scene instead of loading one\n"
+           "  --layout L         forest only: single, line or dense (default dense); docs/scenes.md\n"
            "  --triangles N      size of the generated scene (default 200000)\n"
            "  --seed S           seed of the generated scene (default 1)\n"
            "  --threading MODEL  OSG threading model of the window: " << apps::threadingModelChoices() << "\n"

@@ -60,6 +60,9 @@ TEST(GenApp, RejectsBadArgumentsWithAClearMessage)
     expectFailure("--kind city --adversarial ortho -o " + out, "not both");
     expectFailure("--adversarial no-such-scene -o " + out, "unknown adversarial scene");
     expectFailure("--frobnicate", "unknown argument '--frobnicate'");
+    expectFailure("--kind city --layout line -o " + out, "--layout goes with --kind forest only");
+    expectFailure("--kind forest --layout jungle -o " + out, "unknown forest layout 'jungle'");
+    expectFailure("--kind forest --triangles 23999 -o " + out, "outside [24000");
     expectFailure("--kind tetra --triangles 1000 -o /nonexistent-dir/deeper/x.osgb", "cannot write");
     expectFailure("--kind tetra --triangles 1000 -o " + (scratchDir() / "x.unknownextension").string(), "cannot write");
 }
@@ -68,11 +71,12 @@ TEST(GenApp, HelpAndListTellTheTruth)
 {
     const AppRun help = osgvisgen("--help");
     EXPECT_EQ(help.exitCode, 0);
-    for (const char* option : {"--kind", "--triangles", "--seed", "--adversarial", "-o", "--list"})
+    for (const char* option : {"--kind", "--layout", "--triangles", "--seed", "--adversarial", "-o", "--list"})
         EXPECT_NE(help.output.find(option), std::string::npos) << option;
     const AppRun list = osgvisgen("--list");
     EXPECT_EQ(list.exitCode, 0);
-    for (const char* name : {"office", "city", "tetra", "floor", "thin-slit", "moving-occluder"})
+    for (const char* name :
+         {"office", "city", "tetra", "floor", "forest", "single", "dense", "thin-slit", "moving-occluder"})
         EXPECT_NE(list.output.find(name), std::string::npos) << name;
 }
 
@@ -113,5 +117,22 @@ TEST(GenApp, FloorDefaultsToThreeHundredThousandTriangles)
     EXPECT_NEAR(double(stats.triangles), 300000.0, 30000.0);
     EXPECT_NE(run.output.find(std::to_string(stats.objects) + " objects"), std::string::npos) << run.output;
     expectFailure("--kind floor --triangles 59999 -o " + scene, "outside [60000, 50000000] for floor");
+    std::filesystem::remove_all(dir);
+}
+
+TEST(GenApp, ForestLayoutsDefaultToTwelveThousandTrianglesATree)
+{
+    const auto dir = scratchDir();
+    const std::pair<const char*, double> layouts[] = {{"single", 12000.0}, {"line", 72000.0}};
+    for (const auto& [layout, wanted] : layouts)
+    {
+        const std::string scene = (dir / (std::string(layout) + ".osgb")).string();
+        const AppRun run = osgvisgen(std::string("--kind forest --layout ") + layout + " -o " + scene);
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        EXPECT_NE(run.output.find(std::string("forest ") + layout), std::string::npos) << run.output;
+        osg::ref_ptr<osg::Node> loaded = osgDB::readRefNodeFile(scene);
+        ASSERT_TRUE(loaded.valid());
+        EXPECT_NEAR(double(osgVis::gen::sceneStats(*loaded).triangles), wanted, 0.1 * wanted) << layout;
+    }
     std::filesystem::remove_all(dir);
 }

@@ -64,6 +64,8 @@ const char* solidName(gen::SceneKind kind)
         return "building";
     case gen::SceneKind::Tetra:
         return "tetra";
+    case gen::SceneKind::Forest:
+        return "trunk";
     }
     return "";
 }

@@ -31,14 +31,6 @@ OracleSettings smallSettings(unsigned supersample = 2)
     return settings;
 }
 
-std::vector<osg::ref_ptr<osg::Drawable>> drawablesOf(const IdBufferOracle& oracle)
-{
-    std::vector<osg::ref_ptr<osg::Drawable>> drawables;
-    for (const auto& object : oracle.objects())
-        drawables.push_back(object.drawable);
-    return drawables;
-}
-
 Names idBufferNames(IdBufferOracle& oracle, const Camera& camera)
 {
     return namesOf(drawablesOf(oracle), oracle.visible(camera.view, camera.projection).visible);

@@ -31,6 +31,15 @@ Camera lookDownZ(double eyeZ, double fovyDegrees, double zNear, double zFar); //
 // World point at NDC (x, y) and eye-space distance `depth` along the view axis (perspective or ortho).
 osg::Vec3d worldAtNdc(const Camera& camera, double ndcX, double ndcY, double depth);
 
+// The drawables of an oracle's objects (anything with objects() listing OracleObjects), in its order.
+template <typename Oracle> std::vector<osg::ref_ptr<osg::Drawable>> drawablesOf(const Oracle& oracle)
+{
+    std::vector<osg::ref_ptr<osg::Drawable>> drawables;
+    for (const auto& object : oracle.objects())
+        drawables.push_back(object.drawable);
+    return drawables;
+}
+
 // The names of the objects at these indices, sorted, for readable expectations.
 std::vector<std::string> namesOf(const std::vector<osg::ref_ptr<osg::Drawable>>& drawables,
                                  const std::vector<std::uint32_t>& indices);

@@ -1,23 +1,23 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/gen/Generator.h>
 
+#include "NameTable.h"
 #include "Scenes.h"
 
 #include <osg/LightModel>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace osgVis::gen
 {
 namespace
 {
-struct KindName
-{
-    SceneKind kind;
-    const char* name;
-};
-constexpr KindName kindNames[] = {
-    {SceneKind::Office, "office"}, {SceneKind::City, "city"}, {SceneKind::Tetra, "tetra"}, {SceneKind::Floor, "floor"}};
+constexpr Named<SceneKind> kindNames[] = {{SceneKind::Office, "office"},
+                                          {SceneKind::City, "city"},
+                                          {SceneKind::Tetra, "tetra"},
+                                          {SceneKind::Floor, "floor"},
+                                          {SceneKind::Forest, "forest"}};
 
 // Under a plain headlight, floors and ceilings seen edge-on get no diffuse light and draw black; a
 // global ambient term keeps every surface readable in screenshots, and two-sided lighting lights
@@ -38,21 +38,39 @@ GeneratedScene mesh(SceneModel scene, double density)
 }
 } // namespace
 
-std::uint64_t defaultTriangles(SceneKind kind)
+std::uint64_t defaultTriangles(SceneKind kind, ForestLayout layout)
 {
-    return kind == SceneKind::Floor ? 300000 : GenerateOptions{}.triangles;
+    switch (kind)
+    {
+    case SceneKind::Floor:
+        return 300000;
+    case SceneKind::Forest:
+        // The paper's dense forest has ~385 000 triangles in 32 trees of ~12 000.
+        return layout == ForestLayout::Dense ? 385000 : 12000 * std::uint64_t(forestTreeCount(layout));
+    default:
+        return GenerateOptions{}.triangles;
+    }
 }
 
-std::uint64_t minTrianglesFor(SceneKind kind)
+std::uint64_t minTrianglesFor(SceneKind kind, ForestLayout layout)
 {
-    // The floor's layout is the same for every seed up to doors and furniture; its coarsest meshing
-    // has about 57 000 triangles, so budgets below this could not land within 10 %.
-    return kind == SceneKind::Floor ? 60000 : minTriangles;
+    switch (kind)
+    {
+    case SceneKind::Floor:
+        // The floor's layout is the same for every seed up to doors and furniture; its coarsest
+        // meshing has about 57 000 triangles, so budgets below this could not land within 10 %.
+        return 60000;
+    case SceneKind::Forest:
+        // A tree has at most 31 tubes (12 triangles at the coarsest) and 31 clumps (8): 620.
+        return std::max<std::uint64_t>(minTriangles, 750 * std::uint64_t(forestTreeCount(layout)));
+    default:
+        return minTriangles;
+    }
 }
 
 GeneratedScene generate(const GenerateOptions& options)
 {
-    const std::uint64_t lowest = minTrianglesFor(options.kind);
+    const std::uint64_t lowest = minTrianglesFor(options.kind, options.forestLayout);
     if (options.triangles < lowest || options.triangles > maxTriangles)
         throw std::invalid_argument("triangle budget " + std::to_string(options.triangles) + " is outside [" +
                                     std::to_string(lowest) + ", " + std::to_string(maxTriangles) + "] for " +
@@ -72,6 +90,9 @@ GeneratedScene generate(const GenerateOptions& options)
     case SceneKind::Floor:
         scene = floorModel(options.seed);
         break;
+    case SceneKind::Forest:
+        scene = forestModel(options.forestLayout, options.seed);
+        break;
     }
     const double density = calibrateDensity(scene.model, options.triangles);
     return mesh(std::move(scene), density);
@@ -79,26 +100,17 @@ GeneratedScene generate(const GenerateOptions& options)
 
 SceneKind parseSceneKind(const std::string& name)
 {
-    for (const KindName& k : kindNames)
-        if (name == k.name)
-            return k.kind;
-    throw std::invalid_argument("unknown scene kind '" + name + "' (known: office, city, tetra, floor)");
+    return parseNamed(kindNames, name, "scene kind");
 }
 
 const char* sceneKindName(SceneKind kind)
 {
-    for (const KindName& k : kindNames)
-        if (kind == k.kind)
-            return k.name;
-    return "unknown";
+    return nameOf(kindNames, kind);
 }
 
 std::vector<std::string> sceneKindNames()
 {
-    std::vector<std::string> names;
-    for (const KindName& k : kindNames)
-        names.emplace_back(k.name);
-    return names;
+    return namesIn(kindNames);
 }
 
 GeneratedScene adversarialScene(const std::string& name)

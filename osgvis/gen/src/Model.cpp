@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: MIT
 #include "Model.h"
 
+#include "Circle.h"
+
 #include <osg/Geode>
 #include <osg/Geometry>
 #include <osg/MatrixTransform>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace osgVis::gen
 {
@@ -15,10 +20,27 @@ namespace
 // Caps one edge so a runaway density cannot ask for billions of cells.
 constexpr double maxSubdivisions = 4096.0;
 
+constexpr double pi = 3.141592653589793;
+
 std::uint32_t triangleSubdivisions(const Tri& t, double density)
 {
     const double longest = std::max({(t.b - t.a).length(), (t.c - t.b).length(), (t.a - t.c).length()});
     return subdivisions(longest, density);
+}
+
+std::uint32_t tubeSides(const Tube& t, double density)
+{
+    return std::max(3u, subdivisions(2.0 * pi * std::max(t.baseRadius, t.topRadius), density));
+}
+
+std::uint32_t tubeRings(const Tube& t, double density)
+{
+    return subdivisions(0.25 * (t.top - t.base).length(), density);
+}
+
+std::uint32_t ellipsoidSubdivisions(const Ellipsoid& e, double density)
+{
+    return subdivisions(0.5 * pi * std::max({e.a.length(), e.b.length(), e.c.length()}), density);
 }
 
 void countInstances(const ModelNode& node, std::vector<std::uint64_t>& instances)
@@ -112,6 +134,81 @@ public:
             }
     }
 
+    // Side vertices are shared around and along the tube; each cap has its own copies of its rim (same
+    // coordinates, bit for bit, so the surface stays watertight) for a flat normal.
+    void addTube(const Tube& t, std::uint32_t sides, std::uint32_t rings)
+    {
+        osg::Vec3d axis = t.top - t.base;
+        const double length = axis.normalize();
+        std::vector<osg::Vec3d> around(sides);
+        for (std::uint32_t s = 0; s < sides; ++s)
+            around[s] = aroundAxis(axis, double(s) / sides);
+        const auto ringCentre = [&](std::uint32_t r) { return t.base + axis * (length * r / rings); };
+        const auto ringRadius = [&](std::uint32_t r)
+        { return t.baseRadius + (t.topRadius - t.baseRadius) * (double(r) / rings); };
+
+        const auto side = std::uint32_t(_vertices->size());
+        for (std::uint32_t r = 0; r <= rings; ++r)
+            for (std::uint32_t s = 0; s < sides; ++s)
+            {
+                _vertices->push_back(osg::Vec3(ringCentre(r) + around[s] * ringRadius(r)));
+                // The cone's slope tilts the normal towards the narrow end.
+                _normals->push_back(unitNormal(around[s] * length + axis * (t.baseRadius - t.topRadius)));
+            }
+        for (std::uint32_t r = 0; r < rings; ++r)
+            for (std::uint32_t s = 0; s < sides; ++s)
+            {
+                const std::uint32_t a = side + r * sides + s, b = side + r * sides + (s + 1) % sides;
+                addTriangle(a, b, b + sides);
+                addTriangle(a, b + sides, a + sides);
+            }
+        addCap(side, sides, ringCentre(0), -axis, false);
+        addCap(side + rings * sides, sides, ringCentre(rings), axis, true);
+    }
+
+    // Lattice points (x, y, z) with |x| + |y| + |z| = k cover the octahedron; each is one vertex,
+    // shared by the faces that meet there, pushed onto the unit sphere and then onto the ellipsoid.
+    void addEllipsoid(const Ellipsoid& e, std::uint32_t k)
+    {
+        std::map<std::array<int, 3>, std::uint32_t> indexOf;
+        const osg::Vec3d gradient[3] = {e.a / e.a.length2(), e.b / e.b.length2(), e.c / e.c.length2()};
+        const auto vertex = [&](int x, int y, int z)
+        {
+            const auto [found, added] = indexOf.try_emplace({x, y, z}, std::uint32_t(_vertices->size()));
+            if (added)
+            {
+                osg::Vec3d n(x, y, z);
+                n.normalize();
+                _vertices->push_back(osg::Vec3(e.centre + e.a * n.x() + e.b * n.y() + e.c * n.z()));
+                _normals->push_back(unitNormal(gradient[0] * n.x() + gradient[1] * n.y() + gradient[2] * n.z()));
+            }
+            return found->second;
+        };
+        const int n = int(k);
+        for (int sz : {1, -1})
+            for (int sy : {1, -1})
+                for (int sx : {1, -1})
+                {
+                    // A mirrored octant runs its lattice clockwise: swap two corners to face outward.
+                    const bool mirrored = sx * sy * sz < 0;
+                    const auto face = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c)
+                    {
+                        if (mirrored)
+                            std::swap(b, c);
+                        addTriangle(a, b, c);
+                    };
+                    for (int j = 0; j < n; ++j)
+                        for (int i = 0; i + j < n; ++i)
+                        {
+                            const auto at = [&](int ii, int jj)
+                            { return vertex(sx * ii, sy * jj, sz * (n - ii - jj)); };
+                            face(at(i, j), at(i + 1, j), at(i, j + 1));
+                            if (i + j + 1 < n)
+                                face(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+                        }
+                }
+    }
+
     osg::ref_ptr<osg::Geometry> finish(const Mesh& mesh)
     {
         osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
@@ -143,6 +240,31 @@ public:
     }
 
 private:
+    // A fan around the centre over `sides` rim vertices starting at `rim` (copied), facing `normal`;
+    // counter-clockwise seen from outside when the rim runs counter-clockwise about `normal`.
+    void addCap(std::uint32_t rim, std::uint32_t sides, const osg::Vec3d& centre, const osg::Vec3d& normal,
+                bool rimCounterClockwise)
+    {
+        const osg::Vec3 n = unitNormal(normal);
+        const auto first = std::uint32_t(_vertices->size());
+        for (std::uint32_t s = 0; s < sides; ++s)
+        {
+            const osg::Vec3 p = (*_vertices)[rim + s];
+            _vertices->push_back(p);
+            _normals->push_back(n);
+        }
+        const auto middle = std::uint32_t(_vertices->size());
+        _vertices->push_back(osg::Vec3(centre));
+        _normals->push_back(n);
+        for (std::uint32_t s = 0; s < sides; ++s)
+        {
+            std::uint32_t a = first + s, b = first + (s + 1) % sides;
+            if (!rimCounterClockwise)
+                std::swap(a, b);
+            addTriangle(middle, a, b);
+        }
+    }
+
     void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c)
     {
         _indices->push_back(a);
@@ -163,6 +285,10 @@ osg::ref_ptr<osg::Geometry> buildGeometry(const Mesh& mesh, double density)
         writer.addQuad(q, subdivisions(q.u.length(), d), subdivisions(q.v.length(), d));
     for (const Tri& t : mesh.triangles)
         writer.addTriangle(t, triangleSubdivisions(t, d));
+    for (const Tube& t : mesh.tubes)
+        writer.addTube(t, tubeSides(t, d), tubeRings(t, d));
+    for (const Ellipsoid& e : mesh.ellipsoids)
+        writer.addEllipsoid(e, ellipsoidSubdivisions(e, d));
     return writer.finish(mesh);
 }
 
@@ -251,6 +377,16 @@ std::uint64_t meshTriangles(const Mesh& mesh, double density)
     {
         const std::uint64_t k = triangleSubdivisions(t, d);
         count += k * k;
+    }
+    for (const Tube& t : mesh.tubes)
+    {
+        const std::uint64_t sides = tubeSides(t, d);
+        count += 2 * sides * tubeRings(t, d) + 2 * sides;
+    }
+    for (const Ellipsoid& e : mesh.ellipsoids)
+    {
+        const std::uint64_t k = ellipsoidSubdivisions(e, d);
+        count += 8 * k * k;
     }
     for (const std::vector<osg::Vec3d>& polygon : mesh.polygons)
         count += polygon.size() >= 3 ? polygon.size() - 2 : 0;

@@ -28,6 +28,23 @@ struct Tri
     osg::Vec3d a, b, c;
 };
 
+// A closed tapered cylinder (a cone frustum with flat end caps), counter-clockwise seen from outside.
+// Meshed with max(3, round(2π·r·d)) sides for its larger radius r and round(length·d / 4) rings
+// (at least 1): a straight taper needs no rings for its shape, only for finer triangles.
+struct Tube
+{
+    osg::Vec3d base, top;
+    double baseRadius = 0.0, topRadius = 0.0;
+};
+
+// A closed ellipsoid, counter-clockwise seen from outside: the centre and three orthogonal semi-axes
+// forming a right-handed frame. Meshed as an octahedron whose faces are split into k² triangles and
+// pushed onto the surface, k = round(π/2 · longest semi-axis · d) (at least 1): 8k² triangles.
+struct Ellipsoid
+{
+    osg::Vec3d centre, a, b, c;
+};
+
 struct Mesh
 {
     std::string name;
@@ -36,6 +53,8 @@ struct Mesh
     double densityScale = 1.0;
     std::vector<Quad> quads;
     std::vector<Tri> triangles;
+    std::vector<Tube> tubes;
+    std::vector<Ellipsoid> ellipsoids;
     // Drawn exactly as given (one GL_POLYGON each), never tessellated: degenerate occluder input.
     std::vector<std::vector<osg::Vec3d>> polygons;
 };

@@ -32,6 +32,8 @@ const osg::Vec4 street{0.32f, 0.32f, 0.34f, 1.0f};
 const osg::Vec4 building{0.70f, 0.68f, 0.66f, 1.0f};
 const osg::Vec4 lamp{0.15f, 0.15f, 0.15f, 1.0f};
 const osg::Vec4 tetra{0.80f, 0.55f, 0.25f, 1.0f};
+const osg::Vec4 bark{0.40f, 0.28f, 0.18f, 1.0f};
+const osg::Vec4 leaves{0.25f, 0.50f, 0.20f, 1.0f};
 const osg::Vec4 target{0.90f, 0.20f, 0.20f, 1.0f};   // adversarial: the object a culler must keep
 const osg::Vec4 occluder{0.40f, 0.55f, 0.80f, 1.0f}; // adversarial: what hides (or seems to hide) it
 } // namespace palette

@@ -4,6 +4,7 @@
 #include "Model.h"
 
 #include <osgVis/core/scene/Walk.h>
+#include <osgVis/gen/Forest.h>
 
 #include <cstdint>
 #include <string>
@@ -23,6 +24,8 @@ SceneModel officeModel(std::uint64_t triangles, std::uint32_t seed);
 SceneModel floorModel(std::uint32_t seed);
 SceneModel cityModel(std::uint64_t triangles, std::uint32_t seed);
 SceneModel tetraModel(std::uint64_t triangles, std::uint32_t seed);
+// The trees of a layout: the layout does not depend on the budget, only the tessellation does.
+SceneModel forestModel(ForestLayout layout, std::uint32_t seed);
 
 // Throws std::invalid_argument naming the known scenes.
 SceneModel adversarialModel(const std::string& name);

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <osg/Group>
 #include <osg/StateSet>
+#include <osg/Switch>
 
 namespace osgVis::oracle
 {
@@ -23,5 +25,27 @@ struct IdPassState
 
 extern const char* const IdUniformName;
 
-IdPassState createIdPassState();
+// Where the ID colour comes from: the uniform IdUniformName (one colour for a whole object), or the
+// vertex colour (one colour per triangle, every corner the same).
+enum class IdSource
+{
+    ObjectUniform,
+    VertexColour
+};
+
+IdPassState createIdPassState(IdSource source = IdSource::ObjectUniform);
+
+// The passes as one graph under `root`: opaque objects drawing their IDs; the same objects drawing
+// depth only; transparent objects drawing IDs over that depth (a Switch, so found ones can leave).
+struct IdPassGraph
+{
+    osg::ref_ptr<osg::Group> root, opaqueIds, opaqueDepth;
+    osg::ref_ptr<osg::Switch> transparentIds;
+
+    void addOpaque(osg::Node* chain); // drawn in both opaque passes
+    // The opaque IDs alone, or else the opaque depth with the transparent IDs over it.
+    void showOpaqueIds(bool opaque);
+};
+
+IdPassGraph createIdPassGraph(const IdPassState& pass);
 } // namespace osgVis::oracle

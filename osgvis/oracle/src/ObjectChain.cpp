@@ -14,7 +14,11 @@ osg::ref_ptr<osg::Node> createObjectChain(const OracleObject& object, std::uint3
     osg::ref_ptr<osg::MatrixTransform> placed = new osg::MatrixTransform(object.world);
     placed->getOrCreateStateSet()->addUniform(new osg::Uniform(IdUniformName, idColour(objectIndex)));
     placed->addChild(object.drawable.get());
+    return underPathState(object, placed.get());
+}
 
+osg::ref_ptr<osg::Node> underPathState(const OracleObject& object, osg::Node* placed)
+{
     osg::ref_ptr<osg::Node> chain = placed;
     // path.back() is the drawable itself, drawn with its own stateset
     for (std::size_t i = object.path.size() - 1; i-- > 0;)

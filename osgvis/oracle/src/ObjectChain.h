@@ -14,4 +14,8 @@ namespace osgVis::oracle
 // MatrixTransform with its world matrix and its ID uniform, then the very same drawable (shared, so
 // its own stateset comes along).
 osg::ref_ptr<osg::Node> createObjectChain(const OracleObject& object, std::uint32_t objectIndex);
+
+// `placed` (already carrying the object's world matrix) under groups carrying the statesets found
+// along the object's path above its drawable, in path order.
+osg::ref_ptr<osg::Node> underPathState(const OracleObject& object, osg::Node* placed);
 } // namespace osgVis::oracle
