@@ -3,6 +3,8 @@
 
 #include <ThreadingModel.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
@@ -100,6 +102,8 @@ std::string benchUsage()
            "                   [--mask-slowdown K] [--cull-only]\n"
            "                   [--dynamic] [--threading MODEL,...] [--async on|off|on,off]\n"
            "                   [--async-lookahead N]\n"
+           "                   [--volume X0,Y0,Z0,X1,Y1,Z1|paper [--plane-resolution N] [--planes N]\n"
+           "                    [--volume-face N] [--volume-eyes N] [--volume-repeat N]]\n"
            "                   [--json OUT.json] [--report DIR [--pictures N]] [--explain] [--backoff on|off]\n"
            "                   [--help]\n"
            "\n"
@@ -144,6 +148,14 @@ std::string benchUsage()
            "  synchronous rows the views whose drawn set differs from the main table's pass. Set\n"
            "  LP_NUM_THREADS (Mesa) when timing: llvmpipe's threads compete for the same cores.\n"
            "--async-lookahead N: frames of predicted eye path an async region covers (default 4).\n"
+           "--volume X0,Y0,Z0,X1,Y1,Z1 | paper: instead of the walk, the multifocal volume PVS of that\n"
+           "  box of eyes (paper: the view volume of the generated forest's layout, docs/scenes.md),\n"
+           "  timed (median of --volume-repeat N, default 3), against the volume oracle: eyes at the\n"
+           "  box's 8 corners, 6 face centres and --volume-eyes N (default 48) random points, six\n"
+           "  --volume-face N pixel (default 512) cube faces each, objects and triangles. Prints\n"
+           "  objects and triangles kept, culled, facing away from every eye, and missing (exit\n"
+           "  status 1 when any is missing), and the efficacy on the triangles not facing away.\n"
+           "  --plane-resolution N (default 100) and --planes N (default 3) set the planes.\n"
            "--report DIR: also write DIR/index.html, one self-contained page (inline SVG, nothing\n"
            "  fetched): the table, per-view plots of drawn triangles for every mode against exact and of\n"
            "  cull ms, false-invisible markers, the progressive and threading tables, and N side-by-side\n"
@@ -256,6 +268,18 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.cullOnly = true;
         else if (flag == "--dynamic")
             options.dynamic = true;
+        else if (flag == "--volume")
+            options.volume = value();
+        else if (flag == "--plane-resolution")
+            options.planeResolution = unsigned(parseUnsigned(flag, value()));
+        else if (flag == "--planes")
+            options.planesPerDirection = unsigned(parseUnsigned(flag, value()));
+        else if (flag == "--volume-face")
+            options.volumeFaceSize = unsigned(parseUnsigned(flag, value()));
+        else if (flag == "--volume-eyes")
+            options.volumeEyes = unsigned(parseUnsigned(flag, value()));
+        else if (flag == "--volume-repeat")
+            options.volumeRepeat = unsigned(parseUnsigned(flag, value()));
         else if (flag == "--threading" || flag == "--async")
         {
             try
@@ -312,6 +336,41 @@ BenchOptions parseBenchOptions(int argc, char** argv)
         throw UsageError("--explain reads the rendered walk: not with --cull-only or --dynamic");
     if (options.cullOnly && !options.sweeps() && !options.maskSweep())
         throw UsageError("--cull-only needs a sweep: give --speeds, --threads and/or --mask-deltas");
+    if (!options.volume.empty() &&
+        (options.cullOnly || options.dynamic || options.threadingTable() || !options.reportDir.empty() ||
+         options.explain || options.sweeps() || options.maskSweep()))
+        throw UsageError("--volume is a run of its own: no --cull-only, --dynamic, --threading, --async, --report, "
+                         "--explain or sweeps");
+    if (!options.volume.empty())
+    {
+        if (options.volume == "paper")
+        {
+            if (options.generateKind != "forest")
+                throw UsageError("--volume paper is the view volume of a generated forest: give --generate forest");
+        }
+        else
+        {
+            double v[6];
+            char tail = 0;
+            if (std::sscanf(options.volume.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf%c", v, v + 1, v + 2, v + 3, v + 4, v + 5,
+                            &tail) != 6)
+                throw UsageError("--volume expects X0,Y0,Z0,X1,Y1,Z1 or paper, got '" + options.volume + "'");
+            for (double x : v)
+                if (!std::isfinite(x))
+                    throw UsageError("--volume: the box's corners must be finite, got '" + options.volume + "'");
+            if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5]))
+                throw UsageError("--volume: the box must have positive size along every axis, got '" + options.volume +
+                                 "'");
+        }
+    }
+    if (options.planeResolution < 1 || options.planeResolution > 4096)
+        throw UsageError("--plane-resolution must lie between 1 and 4096");
+    if (options.planesPerDirection < 1 || options.planesPerDirection > 64)
+        throw UsageError("--planes must lie between 1 and 64");
+    if (options.volumeFaceSize < 1 || options.volumeFaceSize > 8192)
+        throw UsageError("--volume-face must lie between 1 and 8192");
+    if (options.volumeRepeat < 1 || options.volumeRepeat > 1000)
+        throw UsageError("--volume-repeat must lie between 1 and 1000");
     return options;
 }
 } // namespace osgVis::bench

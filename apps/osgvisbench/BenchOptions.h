@@ -48,6 +48,12 @@ struct BenchOptions
     std::vector<std::string> threading; // --threading A,B: OSG threading models of the threading table
     std::vector<bool> async;            // --async on|off|on,off: async visibility settings of that table
     unsigned asyncLookAhead = 4;        // --async-lookahead N: frames of eye path a region covers
+    std::string volume;               // --volume X0,Y0,Z0,X1,Y1,Z1|paper: a volume PVS against the volume oracle
+    unsigned planeResolution = 100;   // --plane-resolution N: multifocal planes' pixels (longer side)
+    unsigned planesPerDirection = 3;  // --planes N: multifocal planes per face of the volume
+    unsigned volumeFaceSize = 512;    // --volume-face N: the volume oracle's cube faces, N×N pixels
+    unsigned volumeEyes = 48;         // --volume-eyes N: random interior eyes of the volume oracle
+    unsigned volumeRepeat = 3;        // --volume-repeat N: PVS computations timed (the median is reported)
     bool help = false;                // --help
     std::string commandLine;          // argv joined, recorded in the JSON
 

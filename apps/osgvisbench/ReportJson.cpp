@@ -11,8 +11,6 @@
 
 namespace osgVis::bench
 {
-namespace
-{
 std::string jsonString(const std::string& text)
 {
     std::string quoted = "\"";
@@ -32,6 +30,8 @@ std::string jsonString(const std::string& text)
     return quoted + "\"";
 }
 
+namespace
+{
 std::string jsonNumber(const std::optional<double>& value)
 {
     if (!value || !std::isfinite(*value))

@@ -8,6 +8,8 @@
 
 namespace osgVis::bench
 {
+// `text` as a JSON string literal, quotes included.
+std::string jsonString(const std::string& text);
 void writeReportJson(std::ostream& out, const BenchReport& report);
 // Throws std::runtime_error when the file cannot be written.
 void saveReportJson(const std::string& path, const BenchReport& report);

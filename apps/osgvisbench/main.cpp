@@ -10,6 +10,7 @@
 #include "ReportHtml.h"
 #include "ReportJson.h"
 #include "ReportTable.h"
+#include "VolumeBench.h"
 
 #include <SceneSource.h>
 
@@ -103,6 +104,8 @@ int main(int argc, char** argv)
 
     try
     {
+        if (!options.volume.empty())
+            return runVolumeBench(options, std::cout);
         const BenchReport report = options.dynamic ? runDynamicBench(options, modes) : runBench(options, modes);
         writeReportTable(std::cout, report);
         if (!options.jsonFile.empty())
