@@ -125,8 +125,9 @@ osg::ref_ptr<osg::Node> readPvsScene(const std::string& path)
     auto* group = dynamic_cast<VisibilityGroup*>(node.get());
     if (!group || group->getNumChildren() != 1)
         throw SceneError("cannot read scene '" + path +
-                         "': it did not load as a cellportal VisibilityGroup holding one model");
-    std::cerr << "scene '" << path << "': baked cell-portal data " << trustLine(*group) << std::endl;
+                         "': it did not load as a VisibilityGroup holding one model");
+    const char* what = group->getModes() == "multifocal" ? "view cells" : "cell-portal data";
+    std::cerr << "scene '" << path << "': baked " << what << " " << trustLine(*group) << std::endl;
     return group->getChild(0);
 }
 

@@ -92,6 +92,14 @@ void parseSize(const std::string& text, unsigned& width, unsigned& height)
 }
 } // namespace
 
+core::AsyncOptions asyncOptionsOf(const BenchOptions& options)
+{
+    core::AsyncOptions async;
+    async.lookAheadFrames = options.asyncLookAhead;
+    async.regionSize = core::Vec3(options.asyncRegion[0], options.asyncRegion[1], options.asyncRegion[2]);
+    return async;
+}
+
 std::string benchUsage()
 {
     return "usage: osgvisbench (--scene FILE | --generate office|city|floor|tetra|forest [--layout L]\n"
@@ -101,9 +109,10 @@ std::string benchUsage()
            "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8]\n"
            "                   [--mask-slowdown K] [--cull-only]\n"
            "                   [--dynamic] [--threading MODEL,...] [--async on|off|on,off]\n"
-           "                   [--async-lookahead N]\n"
+           "                   [--async-lookahead N] [--async-region X,Y,Z]\n"
            "                   [--volume X0,Y0,Z0,X1,Y1,Z1|paper [--plane-resolution N] [--planes N]\n"
            "                    [--volume-face N] [--volume-eyes N] [--volume-repeat N]]\n"
+           "                   [--volume-cells N]\n"
            "                   [--json OUT.json] [--report DIR [--pictures N]] [--explain] [--backoff on|off]\n"
            "                   [--help]\n"
            "\n"
@@ -148,6 +157,8 @@ std::string benchUsage()
            "  synchronous rows the views whose drawn set differs from the main table's pass. Set\n"
            "  LP_NUM_THREADS (Mesa) when timing: llvmpipe's threads compete for the same cores.\n"
            "--async-lookahead N: frames of predicted eye path an async region covers (default 4).\n"
+           "--async-region X,Y,Z: an async region is at least this box around the eye (a bake\n"
+           "  cell's size, for multifocal regions); default: the path alone.\n"
            "--volume X0,Y0,Z0,X1,Y1,Z1 | paper: instead of the walk, the multifocal volume PVS of that\n"
            "  box of eyes (paper: the view volume of the generated forest's layout, docs/scenes.md),\n"
            "  timed (median of --volume-repeat N, default 3), against the volume oracle: eyes at the\n"
@@ -155,7 +166,11 @@ std::string benchUsage()
            "  --volume-face N pixel (default 512) cube faces each, objects and triangles. Prints\n"
            "  objects and triangles kept, culled, facing away from every eye, and missing (exit\n"
            "  status 1 when any is missing), and the efficacy on the triangles not facing away.\n"
-           "  --plane-resolution N (default 100) and --planes N (default 3) set the planes.\n"
+           "  --plane-resolution N (default 100) and --planes N (default 7) set the planes.\n"
+           "--volume-cells N: with --scene FILE.pvs baked by osgvispvs --method multifocal, N of its\n"
+           "  view cells (evenly spread over them) against the volume oracle (objects): objects the\n"
+           "  oracle sees that a cell's PVS lacks (exit status 1 when any), and the triangles of the\n"
+           "  PVS's objects over those of the objects seen, per cell and on average.\n"
            "--report DIR: also write DIR/index.html, one self-contained page (inline SVG, nothing\n"
            "  fetched): the table, per-view plots of drawn triangles for every mode against exact and of\n"
            "  cull ms, false-invisible markers, the progressive and threading tables, and N side-by-side\n"
@@ -280,6 +295,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.volumeEyes = unsigned(parseUnsigned(flag, value()));
         else if (flag == "--volume-repeat")
             options.volumeRepeat = unsigned(parseUnsigned(flag, value()));
+        else if (flag == "--volume-cells")
+            options.volumeCells = unsigned(parseUnsigned(flag, value()));
         else if (flag == "--threading" || flag == "--async")
         {
             try
@@ -295,6 +312,17 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             {
                 throw UsageError(error.what());
             }
+        }
+        else if (flag == "--async-region")
+        {
+            const std::vector<std::string> parts = splitList(value(), ',');
+            const std::vector<double> sizes =
+                parts.size() == 3 ? parseNonNegativeList(flag, parts[0] + "," + parts[1] + "," + parts[2], 1e9)
+                                  : std::vector<double>{};
+            if (sizes.size() != 3 || !(sizes[0] > 0.0 && sizes[1] > 0.0 && sizes[2] > 0.0))
+                throw UsageError("--async-region expects three positive sizes X,Y,Z");
+            for (int a = 0; a < 3; ++a)
+                options.asyncRegion[a] = sizes[a];
         }
         else if (flag == "--async-lookahead")
         {
@@ -336,7 +364,12 @@ BenchOptions parseBenchOptions(int argc, char** argv)
         throw UsageError("--explain reads the rendered walk: not with --cull-only or --dynamic");
     if (options.cullOnly && !options.sweeps() && !options.maskSweep())
         throw UsageError("--cull-only needs a sweep: give --speeds, --threads and/or --mask-deltas");
-    if (!options.volume.empty() &&
+    if (options.volumeCells > 0 && !options.volume.empty())
+        throw UsageError("--volume-cells checks the cells of a baked .pvs: not with --volume");
+    if (options.volumeCells > 0 &&
+        (options.sceneFile.size() < 4 || options.sceneFile.compare(options.sceneFile.size() - 4, 4, ".pvs") != 0))
+        throw UsageError("--volume-cells checks the view cells of a .pvs file: give --scene FILE.pvs");
+    if ((!options.volume.empty() || options.volumeCells > 0) &&
         (options.cullOnly || options.dynamic || options.threadingTable() || !options.reportDir.empty() ||
          options.explain || options.sweeps() || options.maskSweep()))
         throw UsageError("--volume is a run of its own: no --cull-only, --dynamic, --threading, --async, --report, "

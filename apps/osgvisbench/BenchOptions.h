@@ -2,6 +2,8 @@
 #pragma once
 // Command line of osgvisbench: what scene, which walk, which modes, at what size, and where the
 // JSON goes. Parsing only: nothing here loads a file or touches GL.
+#include <osgVis/core/async/AsyncVisibility.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -48,12 +50,14 @@ struct BenchOptions
     std::vector<std::string> threading; // --threading A,B: OSG threading models of the threading table
     std::vector<bool> async;            // --async on|off|on,off: async visibility settings of that table
     unsigned asyncLookAhead = 4;        // --async-lookahead N: frames of eye path a region covers
+    double asyncRegion[3] = {0, 0, 0};  // --async-region X,Y,Z: a region's least size (a bake cell's)
     std::string volume;               // --volume X0,Y0,Z0,X1,Y1,Z1|paper: a volume PVS against the volume oracle
     unsigned planeResolution = 100;   // --plane-resolution N: multifocal planes' pixels (longer side)
-    unsigned planesPerDirection = 3;  // --planes N: multifocal planes per face of the volume
+    unsigned planesPerDirection = 7;  // --planes N: multifocal planes per face of the volume
     unsigned volumeFaceSize = 512;    // --volume-face N: the volume oracle's cube faces, N×N pixels
     unsigned volumeEyes = 48;         // --volume-eyes N: random interior eyes of the volume oracle
     unsigned volumeRepeat = 3;        // --volume-repeat N: PVS computations timed (the median is reported)
+    unsigned volumeCells = 0;         // --volume-cells N: N baked view cells of a multifocal .pvs against the volume oracle
     bool help = false;                // --help
     std::string commandLine;          // argv joined, recorded in the JSON
 
@@ -64,5 +68,7 @@ struct BenchOptions
 
 // Throws UsageError naming the offending argument.
 BenchOptions parseBenchOptions(int argc, char** argv);
+// --async-lookahead and --async-region as the asynchronous visibility takes them.
+core::AsyncOptions asyncOptionsOf(const BenchOptions& options);
 std::string benchUsage();
 } // namespace osgVis::bench

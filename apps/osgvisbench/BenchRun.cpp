@@ -75,7 +75,7 @@ void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core
     EmittedObjects emittedObjects(*scene.objects);
     for (const BenchMode& mode : modes)
     {
-        osg::ref_ptr<osg::Node> graph = buildModeGraph(mode, *scene.model, *scene.objects, false, 4, options.backOff);
+        osg::ref_ptr<osg::Node> graph = buildModeGraph(mode, *scene.model, *scene.objects, false, {}, options.backOff);
         viewer.setSceneData(graph.get());
         const auto pointReplay = [&](std::size_t v)
         {

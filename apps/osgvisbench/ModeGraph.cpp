@@ -11,25 +11,21 @@ namespace osgVis::bench
 namespace
 {
 osg::ref_ptr<osg::Node> underVisibilityGroup(osg::Node& model, const std::string& chain, bool async = false,
-                                             unsigned asyncLookAhead = 4, bool backOff = false)
+                                             const core::AsyncOptions& asyncOptions = {}, bool backOff = false)
 {
     osg::ref_ptr<VisibilityGroup> group = new VisibilityGroup;
     group->setModes(chain);
     if (backOff)
         group->setBackOff(core::BackOffOptions{});
     if (async)
-    {
-        core::AsyncOptions options;
-        options.lookAheadFrames = asyncLookAhead;
-        group->setAsync(true, options);
-    }
+        group->setAsync(true, asyncOptions);
     group->addChild(&model);
     return group;
 }
 } // namespace
 
 osg::ref_ptr<osg::Node> buildModeGraph(const BenchMode& mode, osg::Node& model, const ExtractedScene& scene, bool async,
-                                       unsigned asyncLookAhead, bool backOff)
+                                       const core::AsyncOptions& asyncOptions, bool backOff)
 {
     switch (mode.kind)
     {
@@ -42,6 +38,6 @@ osg::ref_ptr<osg::Node> buildModeGraph(const BenchMode& mode, osg::Node& model, 
     case BenchMode::Kind::ModuleChain:
         break;
     }
-    return underVisibilityGroup(model, mode.chain, async, asyncLookAhead, backOff);
+    return underVisibilityGroup(model, mode.chain, async, asyncOptions, backOff);
 }
 } // namespace osgVis::bench

@@ -74,7 +74,7 @@ std::vector<ThreadingRow> runThreadingTable(const BenchOptions& options, const s
                 if (async && mode.kind != BenchMode::Kind::ModuleChain)
                     continue;
                 osg::ref_ptr<osg::Node> graph =
-                    buildModeGraph(mode, *scene.model, *scene.objects, async, options.asyncLookAhead);
+                    buildModeGraph(mode, *scene.model, *scene.objects, async, asyncOptionsOf(options));
                 auto* group = dynamic_cast<VisibilityGroup*>(graph.get());
                 viewer.setSceneData(graph.get());
                 std::vector<double> osgVisMs;

@@ -10,6 +10,7 @@
 #include "ReportHtml.h"
 #include "ReportJson.h"
 #include "ReportTable.h"
+#include "BakedCellCheck.h"
 #include "VolumeBench.h"
 
 #include <SceneSource.h>
@@ -106,6 +107,8 @@ int main(int argc, char** argv)
     {
         if (!options.volume.empty())
             return runVolumeBench(options, std::cout);
+        if (options.volumeCells > 0)
+            return runBakedCellCheck(options, std::cout);
         const BenchReport report = options.dynamic ? runDynamicBench(options, modes) : runBench(options, modes);
         writeReportTable(std::cout, report);
         if (!options.jsonFile.empty())

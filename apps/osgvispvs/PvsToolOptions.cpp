@@ -111,7 +111,7 @@ std::string pvsToolUsage()
            "  --near D               the near-plane reach views will have, at most (default: twice the\n"
            "                         walk's, else 1/1000 of the diagonal); farther-reaching views keep all\n"
            "  --plane-resolution N   pixels along each plane's longer side (default 100)\n"
-           "  --planes N             planes per face of a cell (default 3)\n"
+           "  --planes N             planes per face of a cell (default 7)\n"
            "  --json FILE            also write the statistics as JSON to FILE\n"
            "  --progress             draw the progress bar even when stderr is not a terminal\n"
            "  --help                 this text\n"
