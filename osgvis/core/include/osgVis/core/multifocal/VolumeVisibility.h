@@ -21,7 +21,7 @@ struct MultifocalOptions
     /// Pixels along the longer side of each plane's window (square pixels; the paper uses 100).
     int planeResolution = 100;
     /// Planes per face of V, at depths taken from the occluders beyond that face.
-    int planesPerDirection = 3;
+    int planesPerDirection = 7;
     /// A plane's window spans rays leaving V's face up to this angle from its normal (radians).
     double maxWindowAngle = 1.0471975511965976; // 60°
     /// Occluders whose area-angle seen from V's centre is below this are not inserted (distant).
