@@ -252,3 +252,42 @@ TEST(PvsTool, HelpAndVersionTellTheTruth)
     EXPECT_EQ(version.exitCode, 0);
     EXPECT_NE(version.output.find("osgVis 0.1.0"), std::string::npos) << version.output;
 }
+
+TEST(PvsTool, MultifocalRangesBakedApartMergeIntoTheWholeBake)
+{
+    const fs::path model = writeSmallOffice();
+    const fs::path dir = model.parent_path();
+    const std::string cells = " --method multifocal --grid 0,0,0.7,12,8,2.7 --cell-size 4,4,2 --plane-resolution 32"
+                              " --planes 1 --near 0.3";
+    const AppRun whole = osgvispvs(quoted(model) + " -o " + quoted(dir / "whole.pvs") + cells + " --threads 2");
+    ASSERT_EQ(whole.exitCode, 0) << whole.output;
+    EXPECT_NE(whole.output.find("cells 0-5 of 6"), std::string::npos) << whole.output;
+    const osgVis::core::PvsFile file = osgVis::core::readPvsFile((dir / "whole.pvs").string());
+    EXPECT_EQ(file.method, "multifocal");
+    EXPECT_EQ(file.nearDistance, 0.3);
+    EXPECT_FALSE(file.hasCellPortal);
+    ASSERT_TRUE(file.hasViewCells);
+    EXPECT_EQ(file.viewCells.totalCells, 6u);
+    ASSERT_EQ(osgvispvs(quoted(model) + " -o " + quoted(dir / "low.pvs") + cells + " --cells 0:2 --threads 1").exitCode, 0);
+    ASSERT_EQ(osgvispvs(quoted(model) + " -o " + quoted(dir / "high.pvs") + cells + " --cells 2:6").exitCode, 0);
+    const AppRun merge = osgvispvs("merge " + quoted(dir / "high.pvs") + " " + quoted(dir / "low.pvs") + " -o " +
+                                   quoted(dir / "merged.pvs") + " --complete");
+    ASSERT_EQ(merge.exitCode, 0) << merge.output;
+    EXPECT_EQ(readBytes(dir / "merged.pvs"), readBytes(dir / "whole.pvs"));
+}
+
+TEST(PvsTool, RefusesBadViewCellsNamingThem)
+{
+    const fs::path model = writeSmallOffice();
+    const std::string o = " -o " + quoted(model.parent_path() / "x.pvs");
+    expectFailure(quoted(model) + o + " --grid 0,0,0,1,1,1", 2, "--grid, --walk, --cell-size, --cells and --near go with --method multifocal");
+    expectFailure(quoted(model) + o + " --method multifocal --cell-size 0,1,1", 2, "--cell-size must be positive along every axis");
+    expectFailure(quoted(model) + o + " --method multifocal --cell-size -1,1,1", 2, "--cell-size must be positive along every axis");
+    expectFailure(quoted(model) + o + " --method multifocal --grid 0,0,0,1,1", 2, "--grid expects 6 comma-separated numbers");
+    expectFailure(quoted(model) + o + " --method multifocal --grid 0,0,0,0,1,1", 2, "--grid needs X0 < X1");
+    expectFailure(quoted(model) + o + " --method multifocal --grid 0,0,0,nan,1,1", 2, "--grid expects a number, got 'nan'");
+    expectFailure(quoted(model) + o + " --method multifocal --cells 3:2", 2, "--cells A:B needs A < B");
+    expectFailure(quoted(model) + o + " --method portals", 2, "--method is cellportal or multifocal, got 'portals'");
+    expectFailure(quoted(model) + o + " --method multifocal --grid 0,0,0,8,4,2 --cell-size 4,4,2 --cells 0:9", 1,
+                  "--cells 0:9 reaches past the 2 view cells of this layout");
+}
