@@ -145,3 +145,31 @@ TEST(MultifocalModule, EachPassOfARegionAnswerKeepsEverythingTheRaysSee)
             EXPECT_LT(answer.count(), city.scene.objects.size()) << "pass " << pass;
         }
 }
+
+TEST(VolumeVisibility, AdversarialOccludersKeepEverythingTheRaysSee)
+{
+    // An oblique wall crossing every plane placed beyond the volume's +x face; a wall seen edge-on
+    // from part of the volume (its plane cuts the volume); a slit between two walls narrower than
+    // a plane pixel; an occludee reaching behind the volume.
+    Scene scene;
+    // Low enough that the sightlines through the slit pass above it.
+    addTriangles(scene, {{Vec3f(4, -8, 0), Vec3f(9, 8, 0), Vec3f(9, 8, 1.5f)}, {Vec3f(4, -8, 0), Vec3f(9, 8, 1.5f), Vec3f(4, -8, 1.5f)}},
+                 "oblique wall");
+    addBox(scene, {3, -0.01, 4}, {12, 0.01, 6}, "edge-on wall"); // above the sightlines through the slit
+    addBox(scene, {14, -10, 0}, {14.5, -0.004, 6}, "slit wall left");
+    addBox(scene, {14, 0.004, 0}, {14.5, 10, 6}, "slit wall right");
+    addBox(scene, {20, -0.5, 2}, {21, 0.5, 3}, "behind the slit");
+    addBox(scene, {11, 3, 0}, {12, 4, 0.4}, "behind the oblique wall");
+    addBox(scene, {-6, -1, 0}, {16, -0.5, 0.3}, "reaching behind the volume");
+    const RayCastVisibility rays(scene);
+    const ViewRegion facingTheSlit[] = {regionAround({0, 0, 2.5}, {0.5, 0.5, 0.5}), regionAround({0, 0.2, 2.5}, {1, 1, 1})};
+    for (const ViewRegion& region : facingTheSlit)
+    {
+        const VisibleSet answer = volumeAnswer(scene, region, volumeOccluders(scene));
+        EXPECT_EQ(missedFromRegion(rays, scene, region, answer, 16), "");
+        EXPECT_TRUE(answer.test(4)) << "seen through the slit";
+        EXPECT_TRUE(answer.test(6)) << "reaches behind the volume";
+    }
+    const ViewRegion aside = regionAround({-2, -3, 1}, {0.3, 0.3, 0.3});
+    EXPECT_EQ(missedFromRegion(rays, scene, aside, volumeAnswer(scene, aside, volumeOccluders(scene)), 16), "");
+}
