@@ -112,7 +112,7 @@ TEST(MultifocalModule, AViewTakesItsCellsPvsAndKeepsItWhileTheEyeStaysInTheCell)
     const Aabb cell = module.cellOf(view.eye);
     EXPECT_EQ(cell.min, Vec3(84, 8, 0.5));
     EXPECT_EQ(cell.max, Vec3(88, 12, 2.5));
-    MultifocalOptions volume;
+    MultifocalOptions volume = moduleVolumeOptions();
     volume.nearDistance = nearPlaneReach(view);
     EXPECT_EQ(visible, computeVolumePvs(city.scene, volumeOccluders(city.scene), cell, volume).objects);
     EXPECT_LT(visible.count(), city.scene.objects.size());

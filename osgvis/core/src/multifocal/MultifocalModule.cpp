@@ -168,8 +168,7 @@ void MultifocalModule::cullRegionPass(const ViewRegion& region, VisibleSet& visi
     volume.nearDistance = std::max(volume.nearDistance, region.maxNearReach);
     if (pass == 0)
     {
-        volume.planeResolution = std::min(volume.planeResolution, 64);
-        volume.planesPerDirection = 1;
+        volume.planesPerDirection = std::min(volume.planesPerDirection, 3);
         volume.triangles = false;
         volume.maxOccludersPerPlane = std::min<std::uint32_t>(volume.maxOccludersPerPlane, 2000);
     }

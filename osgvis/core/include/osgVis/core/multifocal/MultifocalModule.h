@@ -17,9 +17,19 @@
 
 namespace osgVis::core
 {
+/// The module's volume options: those of a bake, less the triangle tests. At run time only objects
+/// count, and on a 4 × 4 × 2 m cell of the 500 k city the triangle tests cost 60 % of the time for
+/// 3 % fewer objects (148 against 152).
+inline MultifocalOptions moduleVolumeOptions()
+{
+    MultifocalOptions options;
+    options.triangles = false;
+    return options;
+}
+
 struct MultifocalModuleOptions
 {
-    MultifocalOptions volume;
+    MultifocalOptions volume = moduleVolumeOptions();
     /// Edge lengths of the grid's cells; a zero component means 1/100 of the scene's diagonal.
     Vec3 cellSize{0.0};
     /// A corner of one of the grid's cells (say, eye height minus half a cell above the ground).
@@ -54,8 +64,8 @@ public:
     void cull(const View& view, VisibleSet& visible) override;
     bool supportsRegions() const override { return true; }
     void cullRegion(const ViewRegion& region, VisibleSet& visible) override;
-    /// Two passes (§6's progressive answer): first coarse planes (64 pixels, one per face, no
-    /// triangle tests, the 2000 best occluders), then the full options.
+    /// Two passes (§6's progressive answer): first three planes a face and the 2000 best
+    /// occluders (about half the time on the 500 k city), then the full options.
     std::uint32_t regionPasses() const override { return 2; }
     void cullRegionPass(const ViewRegion& region, VisibleSet& visible, std::uint32_t pass) override;
 
