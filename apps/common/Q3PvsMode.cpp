@@ -4,13 +4,12 @@
 #include <osgVis/Q3Bsp>
 
 #include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/module/BakedDataStore.h>
 #include <osgVis/core/scene/SceneFingerprint.h>
 
 #include <osg/Geode>
 
-#include <map>
 #include <memory>
-#include <mutex>
 
 namespace osgVis::apps
 {
@@ -22,18 +21,6 @@ struct LevelCells
     std::vector<std::vector<int>> objectClusters; // per object; empty: always kept
 };
 
-struct LevelStore
-{
-    std::mutex mutex;
-    std::map<std::uint64_t, std::shared_ptr<const LevelCells>> byFingerprint;
-};
-
-LevelStore& levelStore()
-{
-    static LevelStore store;
-    return store;
-}
-
 class Q3PvsModule : public core::VisibilityModule
 {
 public:
@@ -43,10 +30,7 @@ public:
 
     void setScene(const core::Scene& scene) override
     {
-        LevelStore& store = levelStore();
-        const std::lock_guard<std::mutex> lock(store.mutex);
-        const auto found = store.byFingerprint.find(core::sceneFingerprint(scene));
-        _cells = found == store.byFingerprint.end() ? nullptr : found->second;
+        _cells = core::BakedDataStore<LevelCells>::instance().find(core::sceneFingerprint(scene));
         _cachedCluster = -2;
     }
 
@@ -112,9 +96,7 @@ std::string attachQ3Pvs(const std::string& path, osg::Node& model, const Extract
                                     (cells->bsp.hasVisibility() ? "" : " (no visdata: every cluster sees all)") +
                                     ", " + std::to_string(placed) + " of " +
                                     std::to_string(objects.scene.objects.size()) + " objects in their leaves";
-        LevelStore& store = levelStore();
-        const std::lock_guard<std::mutex> lock(store.mutex);
-        store.byFingerprint[core::sceneFingerprint(objects.scene)] = std::move(cells);
+        core::BakedDataStore<LevelCells>::instance().put(core::sceneFingerprint(objects.scene), std::move(cells));
         return summary;
     }
     catch (const std::exception& e)

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "BakedCellCheck.h"
 
+#include "BenchRun.h"
 #include "ReportJson.h"
 #include "TextFile.h"
 
-#include <SceneSource.h>
 
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/oracle/VolumeOracle.h>
@@ -33,9 +33,8 @@ int runBakedCellCheck(const BenchOptions& options, std::ostream& out)
     const core::PvsFile file = core::readPvsFile(options.sceneFile);
     if (!file.hasViewCells || file.viewCells.cells.empty())
         throw std::runtime_error("'" + options.sceneFile + "' holds no view cells (bake it with osgvispvs --method multifocal)");
-    apps::SceneRequest request;
-    request.scenePath = options.sceneFile;
-    const apps::LoadedScene loaded = apps::loadScene(request);
+    // The walk is loaded as for a walk run and not used.
+    const apps::LoadedScene loaded = loadBenchScene(options);
     const core::Scene& scene = loaded.objects->scene;
     if (scene.objects.size() != file.data.objectCount)
         throw std::runtime_error("'" + options.sceneFile + "' was baked for " + std::to_string(file.data.objectCount) +

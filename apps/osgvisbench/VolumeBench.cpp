@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "VolumeBench.h"
 
+#include "BenchRun.h"
 #include "ReportJson.h"
 #include "TextFile.h"
 
-#include <SceneSource.h>
 
 #include <osgVis/core/multifocal/VolumeVisibility.h>
 #include <osgVis/gen/Forest.h>
@@ -77,13 +77,8 @@ void writeJson(std::ostream& out, const BenchOptions& options, const core::Aabb&
 int runVolumeBench(const BenchOptions& options, std::ostream& out)
 {
     const core::Aabb box = volumeBox(options);
-    apps::SceneRequest request;
-    request.scenePath = options.sceneFile;
-    request.generateKind = options.generateKind;
-    request.triangles = options.triangles;
-    request.seed = options.seed;
-    request.forestLayout = options.forestLayout;
-    const apps::LoadedScene loaded = apps::loadScene(request);
+    // The walk is loaded as for a walk run and not used.
+    const apps::LoadedScene loaded = loadBenchScene(options);
     // The apps extract without triangles; the volume PVS tests triangles and counts them.
     ExtractionOptions extraction;
     extraction.keepTriangles = true;

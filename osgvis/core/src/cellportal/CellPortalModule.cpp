@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/core/cellportal/CellPortalModule.h>
 
+#include <osgVis/core/module/BakedDataStore.h>
+
 #include <osgVis/core/cellportal/PortalStabbing.h>
 
 #include "CellObjects.h"
@@ -14,18 +16,6 @@ namespace osgVis::core
 {
 namespace
 {
-struct BakedStore
-{
-    std::mutex mutex;
-    std::map<std::uint64_t, std::shared_ptr<const CellPortalData>> byFingerprint;
-};
-
-BakedStore& bakedStore()
-{
-    static BakedStore store;
-    return store;
-}
-
 const char* stageName(CellPortalStage stage)
 {
     switch (stage)
@@ -43,17 +33,13 @@ void registerBakedCellPortalData(std::shared_ptr<const CellPortalData> data)
 {
     if (!data)
         return;
-    BakedStore& store = bakedStore();
-    const std::lock_guard<std::mutex> lock(store.mutex);
-    store.byFingerprint[data->fingerprint] = std::move(data);
+    const std::uint64_t fingerprint = data->fingerprint; // read before the move below
+    BakedDataStore<CellPortalData>::instance().put(fingerprint, std::move(data));
 }
 
 std::shared_ptr<const CellPortalData> findBakedCellPortalData(std::uint64_t fingerprint)
 {
-    BakedStore& store = bakedStore();
-    const std::lock_guard<std::mutex> lock(store.mutex);
-    const auto found = store.byFingerprint.find(fingerprint);
-    return found == store.byFingerprint.end() ? nullptr : found->second;
+    return BakedDataStore<CellPortalData>::instance().find(fingerprint);
 }
 
 struct CellPortalModule::Impl

@@ -3,12 +3,12 @@
 // it (their first model, with cells made on demand instead of in a bake).
 #include <osgVis/core/multifocal/MultifocalModule.h>
 
+#include <osgVis/core/module/BakedDataStore.h>
 #include <osgVis/core/scene/SceneFingerprint.h>
 
 #include <cmath>
 #include <list>
 #include <map>
-#include <mutex>
 #include <tuple>
 
 namespace osgVis::core
@@ -22,35 +22,19 @@ struct CellAnswer
     VisibleSet objects;
     double nearReach = 0.0; ///< the near-plane reach it assumed
 };
-
-struct BakedStore
-{
-    std::mutex mutex;
-    std::map<std::uint64_t, std::shared_ptr<const BakedViewCells>> byFingerprint;
-};
-
-BakedStore& bakedStore()
-{
-    static BakedStore store;
-    return store;
-}
 } // namespace
 
 void registerBakedViewCells(std::shared_ptr<const BakedViewCells> cells)
 {
     if (!cells)
         return;
-    BakedStore& store = bakedStore();
-    const std::lock_guard<std::mutex> lock(store.mutex);
-    store.byFingerprint[cells->fingerprint] = std::move(cells);
+    const std::uint64_t fingerprint = cells->fingerprint; // read before the move below
+    BakedDataStore<BakedViewCells>::instance().put(fingerprint, std::move(cells));
 }
 
 std::shared_ptr<const BakedViewCells> findBakedViewCells(std::uint64_t fingerprint)
 {
-    BakedStore& store = bakedStore();
-    const std::lock_guard<std::mutex> lock(store.mutex);
-    const auto found = store.byFingerprint.find(fingerprint);
-    return found == store.byFingerprint.end() ? nullptr : found->second;
+    return BakedDataStore<BakedViewCells>::instance().find(fingerprint);
 }
 
 struct MultifocalModule::Impl
