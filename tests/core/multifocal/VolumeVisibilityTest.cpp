@@ -9,6 +9,7 @@
 
 #include <osgVis/core/multifocal/MultifocalModule.h>
 #include <osgVis/core/occluders/OccluderBuilder.h>
+#include <osgVis/core/scene/SceneFingerprint.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -172,4 +173,52 @@ TEST(VolumeVisibility, AdversarialOccludersKeepEverythingTheRaysSee)
     }
     const ViewRegion aside = regionAround({-2, -3, 1}, {0.3, 0.3, 0.3});
     EXPECT_EQ(missedFromRegion(rays, scene, aside, volumeAnswer(scene, aside, volumeOccluders(scene)), 16), "");
+}
+
+TEST(MultifocalModule, ARegionInsideBakedCellsTakesTheUnionOfTheirPvs)
+{
+    City city = makeCity();
+    addBox(city.scene, {500, 500, 0}, {501, 501, 1}, "far away"); // a model of its own in the store of bakes
+    const std::vector<Aabb> cells{Aabb(Vec3(84, 4, 0.7), Vec3(88, 8, 2.7)), Aabb(Vec3(84, 8, 0.7), Vec3(88, 12, 2.7))};
+    auto baked = std::make_shared<BakedViewCells>();
+    baked->fingerprint = sceneFingerprint(city.scene) ^ 1; // registered under another model first
+    baked->objectCount = std::uint32_t(city.scene.objects.size());
+    baked->nearDistance = 1.0;
+    baked->cells.totalCells = 2;
+    baked->cells.cellIndices = {0, 1};
+    baked->cells.cells = cells;
+    // Cell PVS of objects 0..9 and 5..14: a union no computation would give.
+    for (std::uint32_t first : {0u, 5u})
+    {
+        VisibleSet pvs(city.scene.objects.size());
+        for (ObjectId id = first; id < first + 10; ++id)
+            pvs.set(id);
+        baked->cells.pvs.push_back(pvs);
+    }
+    registerBakedViewCells(baked);
+    MultifocalModule other;
+    other.setScene(city.scene);
+    EXPECT_FALSE(other.bakedCells()) << "another model's cells";
+
+    auto mine = std::make_shared<BakedViewCells>(*baked);
+    mine->fingerprint = sceneFingerprint(city.scene);
+    registerBakedViewCells(mine);
+    MultifocalModule module;
+    module.setScene(city.scene);
+    ASSERT_TRUE(module.bakedCells());
+    ViewRegion inside = regionAround({86, 8, 1.7}, {1, 2, 0.5});
+    VisibleSet answer(city.scene.objects.size(), true);
+    module.cullRegion(inside, answer);
+    EXPECT_EQ(answer.count(), 15u);
+    // Reaching out of the cells, the region is computed.
+    const ViewRegion outside = regionAround({86, 12, 1.7}, {1, 1, 0.5});
+    VisibleSet computed(city.scene.objects.size(), true);
+    module.cullRegion(outside, computed);
+    MultifocalOptions volume = moduleVolumeOptions();
+    volume.nearDistance = outside.maxNearReach;
+    EXPECT_EQ(computed, computeVolumePvs(city.scene, volumeOccluders(city.scene), outside.eyes, volume).objects);
+    // A baked view answers from its cell.
+    VisibleSet view(city.scene.objects.size(), true);
+    module.cull(lookFrom({86, 6, 1.7}, {0, 1, 0}, {0, 0, 1}), view);
+    EXPECT_EQ(view, mine->cells.pvs[0]);
 }

@@ -3,6 +3,8 @@
 // it (their first model, with cells made on demand instead of in a bake).
 #include <osgVis/core/multifocal/MultifocalModule.h>
 
+#include "BoxCover.h"
+
 #include <osgVis/core/module/BakedDataStore.h>
 #include <osgVis/core/scene/SceneFingerprint.h>
 
@@ -148,6 +150,29 @@ void MultifocalModule::cullRegionPass(const ViewRegion& region, VisibleSet& visi
     const Vec3 lo = region.eyes.min, hi = region.eyes.max;
     if (!_scene || region.eyes.empty() || !std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
         return;
+    // A region inside baked cells takes the union of their PVS at once: each holds for every eye
+    // in its cell, and every eye of the region lies in one of them.
+    if (const auto& baked = _impl->baked; baked && region.maxNearReach <= baked->nearDistance)
+    {
+        std::vector<Aabb> boxes;
+        std::vector<std::size_t> overlapping;
+        for (std::size_t i = 0; i < baked->cells.cells.size(); ++i)
+            if (baked->cells.cells[i].intersects(region.eyes))
+            {
+                boxes.push_back(baked->cells.cells[i]);
+                overlapping.push_back(i);
+            }
+        if (!boxes.empty() && boxes.size() <= 27 && boxCoveredBy(region.eyes, boxes))
+        {
+            VisibleSet any(visible.capacity());
+            for (std::size_t i : overlapping)
+                for (ObjectId id : baked->cells.pvs[i].ids())
+                    if (id < any.capacity())
+                        any.set(id);
+            visible.intersectWith(any);
+            return;
+        }
+    }
     MultifocalOptions volume = _impl->options.volume;
     volume.nearDistance = std::max(volume.nearDistance, region.maxNearReach);
     if (pass == 0)

@@ -8,6 +8,7 @@
 /// eye, and an eye outside every cell keeps everything. Without, cells form a grid
 /// (MultifocalModuleOptions::cellSize) whose PVS are computed by computeVolumePvs as the eye
 /// enters them and kept while it stays. Region queries (cullRegion, and with it AsyncVisibility)
+/// take the union of the baked cells' PVS when the region's box lies inside baked cells, else
 /// compute the PVS of the region's own box. Orthographic views keep everything.
 #include <osgVis/core/module/VisibilityModule.h>
 #include <osgVis/core/multifocal/VolumeVisibility.h>
