@@ -224,12 +224,12 @@ VolumePvs computeVolumePvs(const Scene& scene, const std::vector<OccluderPolygon
                     const SceneObject& object = scene.objects[id];
                     const auto box = boxCorners(object.bounds);
                     bool culled = buffer.hidden(box.data(), box.size());
-                    if (!culled && withTriangles && object.triangleCount > 0)
+                    const auto [first, end] = scene.trianglesOf(object);
+                    if (!culled && withTriangles && end > first)
                     {
                         bool allHidden = true;
-                        for (std::uint32_t t = 0; t < object.triangleCount; ++t)
+                        for (std::size_t index = first; index < end; ++index)
                         {
-                            const std::uint32_t index = object.firstTriangle + t;
                             if (result.hiddenTriangles[index])
                                 continue;
                             const Triangle& tri = scene.triangles[index];
@@ -257,9 +257,9 @@ VolumePvs computeVolumePvs(const Scene& scene, const std::vector<OccluderPolygon
         result.statistics.objectsCulled += culled ? 1 : 0;
         if (!withTriangles)
             continue;
-        for (std::uint32_t t = 0; t < object.triangleCount; ++t)
+        const auto [first, end] = scene.trianglesOf(object);
+        for (std::size_t index = first; index < end; ++index)
         {
-            const std::uint32_t index = object.firstTriangle + t;
             if (culled)
                 result.hiddenTriangles[index] = 1;
             const bool away = facesAwayFromVolume(scene.triangles[index], corners);

@@ -127,7 +127,7 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
         if (!isEligible(object, options.sceneGeometry))
             continue;
         sources.push_back(ObjectId(&object - scene.objects.data()));
-        const auto [first, end] = triangleRange(scene, object);
+        const auto [first, end] = scene.trianglesOf(object);
         eligibleTriangles += end - first;
         for (std::size_t t = first; t < end; ++t)
         {
@@ -162,7 +162,7 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
         const SceneObject& object = scene.objects[id];
         const bool flip = (object.flags & OBJECT_CULL_FRONT) != 0;
         ObjectTriangles entry{id, (object.flags & (OBJECT_CULL_BACK | OBJECT_CULL_FRONT)) != 0, {}};
-        const auto [first, end] = triangleRange(scene, object);
+        const auto [first, end] = scene.trianglesOf(object);
         entry.triangles.reserve(end - first);
         for (std::size_t t = first; t < end; ++t)
         {

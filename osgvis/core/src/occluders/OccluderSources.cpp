@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "OccluderSources.h"
 
-#include <algorithm>
-
 namespace osgVis::core
 {
 bool isEligible(const SceneObject& object, bool sceneGeometry)
@@ -17,13 +15,5 @@ bool isEligible(const SceneObject& object, bool sceneGeometry)
     if (flags & OBJECT_OCCLUDER)
         return true;
     return sceneGeometry && !(flags & OBJECT_NO_AUTO_OCCLUDER);
-}
-
-std::pair<std::size_t, std::size_t> triangleRange(const Scene& scene, const SceneObject& object)
-{
-    const std::size_t first = std::min<std::size_t>(object.firstTriangle, scene.triangles.size());
-    const std::size_t end =
-        std::min<std::size_t>(std::size_t(object.firstTriangle) + object.triangleCount, scene.triangles.size());
-    return {first, std::max(first, end)};
 }
 } // namespace osgVis::core

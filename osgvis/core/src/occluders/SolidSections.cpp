@@ -145,7 +145,7 @@ std::vector<OccluderPolygon> convexSolidSections(const Scene& scene, const Solid
     {
         if (!isEligible(object, true) || object.triangleCount < 4 || object.triangleCount > options.maxTriangles)
             continue;
-        const auto [first, end] = triangleRange(scene, object);
+        const auto [first, end] = scene.trianglesOf(object);
         if (!closedMesh(scene, first, end, vertices, faces))
             continue;
         Aabb box;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/core/scene/Scene.h>
 
+#include <algorithm>
+
 namespace osgVis::core
 {
 Aabb Scene::bounds() const
@@ -12,6 +14,13 @@ Aabb Scene::bounds() const
             result.expand(o.bounds);
     }
     return result;
+}
+
+std::pair<std::size_t, std::size_t> Scene::trianglesOf(const SceneObject& object) const
+{
+    const std::size_t first = std::min<std::size_t>(object.firstTriangle, triangles.size());
+    const std::size_t end = std::min<std::size_t>(first + object.triangleCount, triangles.size());
+    return {first, end};
 }
 
 std::uint64_t Scene::totalTriangles() const

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace osgVis::core
@@ -83,6 +84,9 @@ struct Scene
 
     Aabb bounds() const;
     std::uint64_t totalTriangles() const;
+    /// Indices [first, end) into `triangles` of an object's triangles, clipped to what `triangles`
+    /// holds (empty when the source kept none).
+    std::pair<std::size_t, std::size_t> trianglesOf(const SceneObject& object) const;
     /// Adds an object with the next id; returns that id.
     ObjectId addObject(const Aabb& bounds, std::uint32_t triangleCount, std::uint32_t flags = OBJECT_NONE,
                        std::string name = {});
