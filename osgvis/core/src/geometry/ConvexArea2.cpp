@@ -119,6 +119,17 @@ void clipOutside(const ConvexArea2& in, const HalfPlane2& h, ConvexArea2& out)
     clip(in, h, -1.0, out);
 }
 
+void clipInsideAll(ConvexArea2& area, const std::vector<HalfPlane2>& halfPlanes, ConvexArea2& scratch)
+{
+    for (const HalfPlane2& h : halfPlanes)
+    {
+        clipInside(area, h, scratch);
+        area.swap(scratch);
+        if (area.empty())
+            return;
+    }
+}
+
 bool subtractConvex(std::vector<ConvexArea2>& pieces, const std::vector<HalfPlane2>& region, std::size_t maxPieces)
 {
     std::vector<ConvexArea2> remaining;

@@ -101,13 +101,7 @@ bool MultifocalZBuffer::insert(const std::vector<Vec3>& polygon, const Plane& po
     for (int k = 1; k < 8 && !_umbra.empty(); ++k)
     {
         halfPlanesOf(_projections[k], 0.0, _edges);
-        for (const HalfPlane2& h : _edges)
-        {
-            clipInside(_umbra, h, _clip);
-            _umbra.swap(_clip);
-            if (_umbra.empty())
-                break;
-        }
+        clipInsideAll(_umbra, _edges, _clip);
     }
     if (!hasArea(_umbra))
     {
@@ -165,13 +159,7 @@ bool MultifocalZBuffer::insert(const std::vector<Vec3>& polygon, const Plane& po
                 continue;
             }
             _piece = square;
-            for (const HalfPlane2& h : _edges)
-            {
-                clipInside(_piece, h, _clip);
-                _piece.swap(_clip);
-                if (_piece.empty())
-                    break;
-            }
+            clipInsideAll(_piece, _edges, _clip);
             if (!hasArea(_piece))
                 continue;
             const double z = lowestHitH(_piece, polygonPlane, minH);

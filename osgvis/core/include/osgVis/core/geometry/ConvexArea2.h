@@ -38,6 +38,8 @@ void clipInside(const ConvexArea2& in, const HalfPlane2& h, ConvexArea2& out);
 void clipOutside(const ConvexArea2& in, const HalfPlane2& h, ConvexArea2& out);
 /// The part of convex `subject` inside convex `clip` (both counter-clockwise).
 ConvexArea2 convexIntersection(ConvexArea2 subject, const ConvexArea2& clip);
+/// area ∩= every half-plane, in turn (`scratch` is reused); stops once nothing is left.
+void clipInsideAll(ConvexArea2& area, const std::vector<HalfPlane2>& halfPlanes, ConvexArea2& scratch);
 /// True when `area` holds at least 3 vertices and positive area.
 bool hasArea(const ConvexArea2& area);
 
