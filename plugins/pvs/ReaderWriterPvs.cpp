@@ -94,6 +94,16 @@ osgDB::ReaderWriter::ReadResult showWithModel(core::PvsFile&& pvs, const std::st
                  << std::endl;
         return makeUntrustedGroup(*model, name, reason);
     }
+    if (pvs.sourceRange)
+    {
+        const std::string reason = "holds only source cells " + std::to_string(pvs.sourceRange->first) + "-" +
+                                   std::to_string(pvs.sourceRange->second - 1) + " of " +
+                                   std::to_string(pvs.data.sources.size()) +
+                                   " (a range file of a split bake: join the ranges with osgvispvs merge)";
+        OSG_WARN << "osgVis: " << pvsFile << " " << reason << "; showing " << modelFile << " with frustum culling only"
+                 << std::endl;
+        return makeUntrustedGroup(*model, name, reason);
+    }
     const std::string mismatch = mismatchWithModel(pvs, *model);
     if (!mismatch.empty())
     {

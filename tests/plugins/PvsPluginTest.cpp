@@ -174,6 +174,22 @@ TEST_F(PvsPlugin, ReplacedModelIsShownWithFrustumOnly)
     readUntrusted(path("x.pvs"), "baked for another model (geometry fingerprint 0x");
 }
 
+// A range file of a split cell-portal bake holds empty placeholders for the other sources: used as
+// visibility they would cull everything seen from those cells.
+TEST_F(PvsPlugin, CellPortalRangeFileIsShownWithFrustumOnly)
+{
+    writeOffice();
+    osgVis::core::PvsFile pvs = osgVis::core::readPvsFile(path("x.pvs"));
+    const std::size_t cells = pvs.data.sources.size();
+    ASSERT_GT(cells, 2u);
+    for (std::size_t c = 1; c < cells; ++c)
+        pvs.data.sources[c] = osgVis::core::placeholderSource(cells, pvs.data.objectCount);
+    pvs.sourceRange = std::make_pair(0u, 1u);
+    osgVis::core::writePvsFile(path("x.pvs"), pvs);
+    readUntrusted(path("x.pvs"), "holds only source cells 0-0 of " + std::to_string(cells) +
+                                     " (a range file of a split bake: join the ranges with osgvispvs merge)");
+}
+
 TEST_F(PvsPlugin, WrittenPvsRecordsItsBake)
 {
     writeOffice();

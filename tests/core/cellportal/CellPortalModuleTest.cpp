@@ -3,6 +3,7 @@
 // joined by doors, a room around a corner, an open field (one cell), and the search budget.
 #include <osgVis/core/cellportal/CellPortalModule.h>
 #include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/pvs/CellPortalMerge.h>
 #include <osgVis/core/pvs/PvsFormat.h>
 
 #include "BoxScenes.h"
@@ -220,3 +221,125 @@ TEST(CellPortal, RegisteredUnderTheFourStageNames)
     }
 }
 } // namespace
+
+namespace
+{
+// Source cells [first, end) of `plan` as the range file of a split bake.
+PvsFile sourceRangeFile(const CellPortalBakePlan& plan, std::uint32_t first, std::uint32_t end,
+                        const BakeOptions& options)
+{
+    PvsFile file;
+    file.method = "cellportal";
+    file.options = canonicalBakeOptions(options);
+    file.data = plan.skeleton();
+    std::vector<SourceCellVisibility> sources = plan.bakeSources(first, end);
+    for (std::uint32_t c = first; c < end; ++c)
+        file.data.sources[c] = std::move(sources[c - first]);
+    file.sourceRange = std::make_pair(first, end);
+    return decodePvs(encodePvs(file).data(), encodePvs(file).size()); // as read back from disk
+}
+
+std::string mergeError(const std::vector<PvsFile>& ranges, bool requireAll = false)
+{
+    ViewCellMergeOptions options;
+    options.requireAllCells = requireAll;
+    try
+    {
+        mergeCellPortalPvs(ranges, options);
+    }
+    catch (const PvsFormatError& e)
+    {
+        return e.what();
+    }
+    return "(merged)";
+}
+} // namespace
+
+TEST(CellPortal, SourceRangesBakedApartMergeIntoTheWholeBakesBytes)
+{
+    RoomRow row = roomRow(5, {1.5, 0.4, 2.6, 1.5});
+    BakeOptions options;
+    options.threads = 1;
+    PvsFile whole;
+    whole.method = "cellportal";
+    whole.options = canonicalBakeOptions(options);
+    whole.data = bakeCellPortal(row.scene, options);
+    const CellPortalBakePlan plan(row.scene, options);
+    const auto n = std::uint32_t(plan.cellCount());
+    ASSERT_GT(n, 4u);
+    EXPECT_EQ(plan.skeleton().graph.cells.size(), whole.data.graph.cells.size());
+    const std::vector<PvsFile> ranges = {sourceRangeFile(plan, 3, n, options), sourceRangeFile(plan, 0, 1, options),
+                                         sourceRangeFile(plan, 1, 3, options)};
+    ViewCellMergeOptions complete;
+    complete.requireAllCells = true;
+    const PvsFile merged = mergeCellPortalPvs(ranges, complete);
+    EXPECT_FALSE(merged.sourceRange);
+    EXPECT_EQ(encodePvs(merged), encodePvs(whole));
+
+    // Two adjacent ranges give the range file of both, its statistics left empty.
+    const PvsFile partial = mergeCellPortalPvs({ranges[2], ranges[1]});
+    ASSERT_TRUE(partial.sourceRange);
+    EXPECT_EQ(*partial.sourceRange, std::make_pair(0u, 3u));
+    EXPECT_EQ(partial.data.statistics.stabNodes, 0u);
+    for (std::uint32_t c = 0; c < n; ++c)
+        EXPECT_EQ(isPlaceholderSource(partial.data.sources[c]), c >= 3) << c;
+
+    const std::vector<double> costs = plan.sourceCostEstimates();
+    ASSERT_EQ(costs.size(), n);
+    for (double cost : costs)
+        EXPECT_GE(cost, 1.0);
+}
+
+TEST(CellPortal, SourceRangeMergeRefusesWhatIsNotOneBake)
+{
+    RoomRow row = roomRow(4, {1.5, 0.4, 2.6});
+    BakeOptions options;
+    const CellPortalBakePlan plan(row.scene, options);
+    const auto n = std::uint32_t(plan.cellCount());
+    const PvsFile low = sourceRangeFile(plan, 0, 2, options), high = sourceRangeFile(plan, 2, n, options);
+    EXPECT_EQ(mergeError({low, sourceRangeFile(plan, 1, 3, options)}), "source cell 1 is in both input 1 and input 2");
+    EXPECT_EQ(mergeError({low}, true).rfind("the inputs miss " + std::to_string(n - 2) + " of the " +
+                                                std::to_string(n) + " source cells: 2-",
+                                            0),
+              0u)
+        << mergeError({low}, true);
+    EXPECT_NE(mergeError({low, sourceRangeFile(plan, 3, n, options)}).find("a partial merge must hold one contiguous range"),
+              std::string::npos);
+    PvsFile otherOptions = high;
+    otherOptions.options = "min-coverage=0.5";
+    EXPECT_EQ(mergeError({low, otherOptions}).rfind("input 2 and input 1 are not ranges of one bake (options", 0), 0u);
+    PvsFile otherGraph = high;
+    otherGraph.data.graph.cells[0].max.z += 1.0;
+    EXPECT_EQ(mergeError({low, otherGraph}),
+              "input 2 and input 1 are not ranges of one bake (different subdivisions: " + std::to_string(n) + " and " +
+                  std::to_string(n) + " cells)");
+    PvsFile otherModel = high;
+    otherModel.data.fingerprint ^= 1;
+    EXPECT_EQ(mergeError({low, otherModel}).rfind("input 2 and input 1 were baked for different models (fingerprint", 0),
+              0u);
+    PvsFile viewCells;
+    viewCells.hasCellPortal = false;
+    EXPECT_EQ(mergeError({viewCells}), "cannot merge input 1: it holds no cell-portal data");
+}
+
+TEST(CellPortal, RangeFileWithDataOutsideItsRangeIsRefused)
+{
+    RoomRow row = roomRow(3, {1.5, 0.4});
+    const CellPortalBakePlan plan(row.scene, {});
+    PvsFile file;
+    file.data = plan.skeleton();
+    file.data.sources = plan.bakeSources(0, plan.cellCount());
+    file.sourceRange = std::make_pair(0u, 1u); // the other sources are not placeholders
+    try
+    {
+        encodePvs(file);
+        ADD_FAILURE() << "encoded";
+    }
+    catch (const PvsFormatError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("source cell 1 outside the range 0:1 holds data"), std::string::npos)
+            << e.what();
+    }
+    file.sourceRange = std::make_pair(1u, 1u);
+    EXPECT_THROW(encodePvs(file), PvsFormatError);
+}

@@ -114,7 +114,7 @@ TEST(ViewCellMerge, RepeatedCellsAndWrongInputsAreRefused)
     PvsFile cellPortal = osgVis::test::makeCellPortalSample();
     EXPECT_EQ(mergeError({viewCellRange(whole, 0, 4), cellPortal}), "cannot merge input 2: it holds no view cells");
     cellPortal.hasViewCells = true;
-    EXPECT_EQ(mergeError({cellPortal}), "cannot merge input 1: it holds cell-portal data (only view-cell files merge)");
+    EXPECT_EQ(mergeError({cellPortal}), "cannot merge input 1: it holds cell-portal data (view-cell and cell-portal files do not merge together)");
     PvsFile ragged = viewCellRange(whole, 0, 4);
     ragged.viewCells.pvs.pop_back();
     EXPECT_EQ(mergeError({ragged}), "cannot merge input 1: its view cells have 4 indices, 4 boxes and 3 sets");

@@ -13,6 +13,7 @@
 #include <charconv>
 #include <deque>
 #include <mutex>
+#include <stdexcept>
 
 namespace osgVis::core
 {
@@ -158,57 +159,100 @@ private:
 };
 } // namespace
 
-CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options, const BakeProgress& progress)
+struct CellPortalBakePlan::Context
 {
-    CellPortalData data;
-    data.fingerprint = sceneFingerprint(scene);
-    data.objectCount = static_cast<std::uint32_t>(scene.objects.size());
-    data.graph = subdivideCells(scene, options.subdivision);
-    const CellGraph& graph = data.graph;
-    const double tolerance = cellPortalTolerance(graph);
-    const CellObjects objects = assignObjectsToCells(scene, graph, tolerance);
-    std::vector<Aabb> bounds(scene.objects.size());
-    for (const SceneObject& object : scene.objects)
-        bounds[object.id] = object.bounds;
+    CellObjects objects;
+    std::vector<Aabb> bounds;
+    double tolerance = 0.0;
+};
 
-    const BakeContext context{graph, objects, bounds, tolerance, options.stabBudget};
-    const std::size_t cellCount = graph.cells.size();
-    data.sources.resize(cellCount);
+CellPortalBakePlan::CellPortalBakePlan(const Scene& scene, const BakeOptions& options)
+    : _options(options), _context(std::make_unique<Context>())
+{
+    _skeleton.fingerprint = sceneFingerprint(scene);
+    _skeleton.objectCount = static_cast<std::uint32_t>(scene.objects.size());
+    _skeleton.graph = subdivideCells(scene, options.subdivision);
+    _context->tolerance = cellPortalTolerance(_skeleton.graph);
+    _context->objects = assignObjectsToCells(scene, _skeleton.graph, _context->tolerance);
+    _context->bounds.resize(scene.objects.size());
+    for (const SceneObject& object : scene.objects)
+        _context->bounds[object.id] = object.bounds;
+    _skeleton.sources.assign(cellCount(), placeholderSource(cellCount(), _skeleton.objectCount));
+}
+
+CellPortalBakePlan::~CellPortalBakePlan() = default;
+
+std::vector<SourceCellVisibility> CellPortalBakePlan::bakeSources(std::size_t first, std::size_t end,
+                                                                  const BakeProgress& progress) const
+{
+    if (first > end || end > cellCount())
+        throw std::out_of_range("bakeSources: cells " + std::to_string(first) + ".." + std::to_string(end) +
+                                " outside the " + std::to_string(cellCount()) + " cells");
+    const BakeContext context{_skeleton.graph, _context->objects, _context->bounds, _context->tolerance,
+                              _options.stabBudget};
+    const std::size_t count = end - first;
+    std::vector<SourceCellVisibility> sources(count);
     std::atomic<std::size_t> done{0};
     std::mutex progressMutex;
     const auto searchCells = [&](const tbb::blocked_range<std::size_t>& range)
     {
-        for (std::size_t cell = range.begin(); cell != range.end(); ++cell)
+        for (std::size_t i = range.begin(); i != range.end(); ++i)
         {
-            SourceCellSearch search(context, data.sources[cell]);
-            search.run(static_cast<std::uint32_t>(cell));
+            SourceCellSearch search(context, sources[i]);
+            search.run(static_cast<std::uint32_t>(first + i));
             const std::size_t finished = ++done;
             if (progress)
             {
                 const std::lock_guard<std::mutex> lock(progressMutex);
-                progress(finished, cellCount);
+                progress(finished, count);
             }
         }
     };
-    const int threads = options.threads == 0 ? tbb::this_task_arena::max_concurrency() : int(options.threads);
+    const int threads = _options.threads == 0 ? tbb::this_task_arena::max_concurrency() : int(_options.threads);
     tbb::task_arena arena(threads);
-    arena.execute([&] { tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cellCount, 1), searchCells); });
+    arena.execute([&] { tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1), searchCells); });
+    return sources;
+}
 
-    BakeStatistics& stats = data.statistics;
-    stats.cells = static_cast<std::uint32_t>(cellCount);
-    stats.portals = static_cast<std::uint32_t>(graph.portals.size());
-    for (const SourceCellVisibility& source : data.sources)
+std::vector<double> CellPortalBakePlan::sourceCostEstimates() const
+{
+    const CellGraph& graph = _skeleton.graph;
+    std::vector<double> local(cellCount());
+    for (std::size_t c = 0; c < cellCount(); ++c)
+        local[c] = 1.0 + double(_context->objects.perCell[c].size()) + double(graph.cellPortals[c].size());
+    std::vector<double> costs(cellCount(), 0.0);
+    std::vector<std::uint32_t> seen(cellCount(), NoCell);
+    for (std::size_t c = 0; c < cellCount(); ++c)
     {
-        stats.stabNodes += source.stabTree.size();
-        stats.budgetExceededCells += source.budgetExceeded ? 1u : 0u;
-        stats.averageVisibleCells += double(source.cellToCell.count());
-        stats.averagePvsObjects += double(source.cellToObject.count());
+        // The cells within two portals of c, each once.
+        std::vector<std::uint32_t> ring{std::uint32_t(c)};
+        seen[c] = std::uint32_t(c);
+        for (int step = 0; step < 2; ++step)
+        {
+            const std::size_t end = ring.size();
+            for (std::size_t k = 0; k < end; ++k)
+                for (std::uint32_t p : graph.cellPortals[ring[k]])
+                {
+                    const std::uint32_t next = graph.portals[p].otherCell(ring[k]);
+                    if (next != NoCell && seen[next] != c)
+                    {
+                        seen[next] = std::uint32_t(c);
+                        ring.push_back(next);
+                    }
+                }
+        }
+        for (std::uint32_t cell : ring)
+            costs[c] += local[cell];
     }
-    if (cellCount != 0)
-    {
-        stats.averageVisibleCells /= double(cellCount);
-        stats.averagePvsObjects /= double(cellCount);
-    }
+    return costs;
+}
+
+CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options, const BakeProgress& progress)
+{
+    const CellPortalBakePlan plan(scene, options);
+    CellPortalData data = plan.skeleton();
+    data.sources = plan.bakeSources(0, plan.cellCount(), progress);
+    data.statistics = bakeStatisticsOf(data);
     return data;
 }
 

@@ -82,9 +82,15 @@ std::vector<Aabb> viewCellsAlong(const std::vector<Vec3>& eyes, const Vec3& cell
 ViewCellBake bakeViewCells(const Scene& scene, const std::vector<Aabb>& cells, std::size_t first, std::size_t end,
                            const MultifocalOptions& options, const std::function<void(std::size_t, std::size_t)>& progress)
 {
+    return bakeViewCells(scene, volumeOccluders(scene), cells, first, end, options, progress);
+}
+
+ViewCellBake bakeViewCells(const Scene& scene, const std::vector<OccluderPolygon>& occluders,
+                           const std::vector<Aabb>& cells, std::size_t first, std::size_t end,
+                           const MultifocalOptions& options, const std::function<void(std::size_t, std::size_t)>& progress)
+{
     if (first > end || end > cells.size())
         throw std::invalid_argument("bakeViewCells: cell range out of bounds");
-    const std::vector<OccluderPolygon> occluders = volumeOccluders(scene);
     ViewCellBake bake;
     const std::size_t count = end - first;
     bake.pvs.resize(count);
@@ -103,5 +109,34 @@ ViewCellBake bakeViewCells(const Scene& scene, const std::vector<Aabb>& cells, s
                               progress(done, count);
                       });
     return bake;
+}
+
+std::vector<double> viewCellCostEstimates(const Scene& scene, const std::vector<Aabb>& cells)
+{
+    std::vector<double> costs(cells.size(), 1.0);
+    if (cells.empty())
+        return costs;
+    double diagonal = 0.0;
+    for (const Aabb& cell : cells)
+        diagonal = std::max(diagonal, glm::length(cell.extent()));
+    const double bin = 4.0 * std::max(diagonal, 1e-9);
+    using Key = std::tuple<long long, long long, long long>;
+    const auto keyOf = [bin](const Vec3& p) {
+        return Key{(long long)std::floor(p.x / bin), (long long)std::floor(p.y / bin), (long long)std::floor(p.z / bin)};
+    };
+    std::map<Key, double> objectsPerBin;
+    for (const SceneObject& object : scene.objects)
+        if (!object.bounds.empty())
+            objectsPerBin[keyOf(object.bounds.center())] += 1.0;
+    for (std::size_t c = 0; c < cells.size(); ++c)
+    {
+        const auto [x, y, z] = keyOf(cells[c].center());
+        for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dy = -1; dy <= 1; ++dy)
+                for (long long dz = -1; dz <= 1; ++dz)
+                    if (const auto found = objectsPerBin.find(Key{x + dx, y + dy, z + dz}); found != objectsPerBin.end())
+                        costs[c] += found->second;
+    }
+    return costs;
 }
 } // namespace osgVis::core

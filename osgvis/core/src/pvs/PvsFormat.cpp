@@ -29,6 +29,7 @@ constexpr PvsTag ModelTag{"HEAD", "model header"};
 constexpr PvsTag BuildTag{"BILD", "build identity"};
 constexpr PvsTag GeometryTag{"GEOM", "geometry fingerprint"};
 constexpr PvsTag CellPortalTag{"CPDT", "cell-portal data"};
+constexpr PvsTag SourceRangeTag{"CPRG", "cell-portal source range"};
 constexpr PvsTag ViewCellTag{"VCEL", "view cells"};
 
 // The writer refuses what the reader would refuse, so a bake bug shows when saving, not loading;
@@ -40,6 +41,15 @@ void checkEncodable(const PvsFile& file)
         checkCellPortalEncodable(d);
     else if (!d.graph.cells.empty() || !d.sources.empty())
         throw PvsFormatError("cannot encode .pvs: cell-portal data given but hasCellPortal is false");
+    if (file.sourceRange)
+    {
+        const auto [first, end] = *file.sourceRange;
+        if (!file.hasCellPortal)
+            throw PvsFormatError("cannot encode .pvs: a source range without cell-portal data");
+        if (!(first < end && end <= d.sources.size()))
+            throw PvsFormatError("cannot encode .pvs: source range " + std::to_string(first) + ":" +
+                                 std::to_string(end) + " outside the " + std::to_string(d.sources.size()) + " cells");
+    }
     const ViewCellPvs& v = file.viewCells;
     if (file.hasViewCells)
         checkViewCellsEncodable(v, d.objectCount);
@@ -92,6 +102,24 @@ void readCellPortalSection(PvsByteReader& s, PvsFile& file)
     file.hasCellPortal = true;
 }
 
+// After CPDT: which sources the file baked; every other one must be a placeholder, so that a range
+// file can never pass for complete data with empty PVS.
+void readSourceRangeSection(PvsByteReader& s, PvsFile& file)
+{
+    if (!file.hasCellPortal)
+        s.fail("a source range without cell-portal data");
+    const std::uint32_t first = s.u32(), end = s.u32();
+    const std::vector<SourceCellVisibility>& sources = file.data.sources;
+    if (!(first < end && end <= sources.size()))
+        s.fail("source range " + std::to_string(first) + ":" + std::to_string(end) + " outside the " +
+               std::to_string(sources.size()) + " cells");
+    for (std::size_t c = 0; c < sources.size(); ++c)
+        if ((c < first || c >= end) && !isPlaceholderSource(sources[c]))
+            s.fail("source cell " + std::to_string(c) + " outside the range " + std::to_string(first) + ":" +
+                   std::to_string(end) + " holds data");
+    file.sourceRange = std::make_pair(first, end);
+}
+
 void readViewCellSection(PvsByteReader& s, PvsFile& file)
 {
     file.viewCells = readViewCells(s, file.data.objectCount);
@@ -111,6 +139,7 @@ const KnownSection KnownSections[] = {
     {BuildTag, true, false, readBuildIdentity},
     {GeometryTag, true, false, readGeometryFingerprint},
     {CellPortalTag, false, true, readCellPortalSection},
+    {SourceRangeTag, false, false, readSourceRangeSection},
     {ViewCellTag, false, false, readViewCellSection},
 };
 constexpr std::size_t KnownSectionCount = std::size(KnownSections);
@@ -169,7 +198,7 @@ PvsFile readSectionsVersion2(PvsByteReader& in, bool complete)
                                  hex(flags) + " where " + hex(SectionRequired) + " is expected");
         if (k < next)
             throw PvsFormatError(sectionText(known.tag) + " at byte " + std::to_string(at) +
-                                 " out of order or repeated (version 2 stores HEAD, BILD, GEOM, CPDT, VCEL in this "
+                                 " out of order or repeated (version 2 stores HEAD, BILD, GEOM, CPDT, CPRG, VCEL in this "
                                  "order, each at most once)");
         requirePresent(next, k, "before byte " + std::to_string(at));
         in.setContext(known.tag.name);
@@ -224,6 +253,13 @@ std::vector<std::uint8_t> encodePvs(const PvsFile& file)
     writeSection(out, GeometryTag, [&] { out.u64(file.geometryFingerprint); });
     if (file.hasCellPortal)
         writeSection(out, CellPortalTag, [&] { writeCellPortalParts(out, file.data); });
+    if (file.sourceRange)
+        writeSection(out, SourceRangeTag,
+                     [&]
+                     {
+                         out.u32(file.sourceRange->first);
+                         out.u32(file.sourceRange->second);
+                     });
     if (file.hasViewCells)
         writeSection(out, ViewCellTag, [&] { writeViewCells(out, file.viewCells); });
 

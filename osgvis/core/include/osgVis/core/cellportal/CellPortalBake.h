@@ -8,6 +8,7 @@
 #include <osgVis/core/cellportal/CellSubdivision.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace osgVis::core
@@ -27,6 +28,35 @@ struct BakeOptions
 using BakeProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 CellPortalData bakeCellPortal(const Scene& scene, const BakeOptions& options = {}, const BakeProgress& progress = {});
+
+/// The bake in pieces, for bakes split over processes (osgvispvs --cells, MPI): the subdivision
+/// and the objects of each cell, computed alike by every process (deterministic), then the stab
+/// trees of any range of source cells. A source cell's result depends only on the scene, the
+/// options and the cell, so ranges baked apart equal the whole bake's.
+class CellPortalBakePlan
+{
+public:
+    CellPortalBakePlan(const Scene& scene, const BakeOptions& options);
+    ~CellPortalBakePlan();
+    CellPortalBakePlan(const CellPortalBakePlan&) = delete;
+    CellPortalBakePlan& operator=(const CellPortalBakePlan&) = delete;
+
+    /// The subdivision, fingerprint and object count, with every source cell an empty placeholder.
+    const CellPortalData& skeleton() const { return _skeleton; }
+    std::size_t cellCount() const { return _skeleton.graph.cells.size(); }
+    /// The visibility from source cells [first, end), in parallel on options.threads.
+    std::vector<SourceCellVisibility> bakeSources(std::size_t first, std::size_t end,
+                                                  const BakeProgress& progress = {}) const;
+    /// A guess of each source cell's search cost, to hand out the dearest first: the objects and
+    /// portals of the cells within two portals of it (the search grows with both).
+    std::vector<double> sourceCostEstimates() const;
+
+private:
+    struct Context;
+    CellPortalData _skeleton;
+    BakeOptions _options;
+    std::unique_ptr<Context> _context;
+};
 
 /// The options as a `.pvs` file records them (PvsFile::options), one spelling for equal options:
 /// "min-coverage=0.3 min-face-area=0 min-cell-size=1e-04 max-depth=40 max-cells=200000

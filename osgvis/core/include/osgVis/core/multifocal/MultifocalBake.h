@@ -32,4 +32,14 @@ struct ViewCellBake
 ViewCellBake bakeViewCells(const Scene& scene, const std::vector<Aabb>& cells, std::size_t first, std::size_t end,
                            const MultifocalOptions& options,
                            const std::function<void(std::size_t, std::size_t)>& progress = {});
+/// The same with the occluders built once by the caller (volumeOccluders(scene)), for a caller that
+/// bakes many ranges of one scene.
+ViewCellBake bakeViewCells(const Scene& scene, const std::vector<OccluderPolygon>& occluders,
+                           const std::vector<Aabb>& cells, std::size_t first, std::size_t end,
+                           const MultifocalOptions& options,
+                           const std::function<void(std::size_t, std::size_t)>& progress = {});
+/// A guess of each cell's bake cost, to hand out the dearest first: the objects whose centres lie
+/// in the cell's neighbourhood (bins of four cell diagonals, the bin and its 26 neighbours), where
+/// occluders near the cell cover most and the z-buffer work concentrates.
+std::vector<double> viewCellCostEstimates(const Scene& scene, const std::vector<Aabb>& cells);
 } // namespace osgVis::core

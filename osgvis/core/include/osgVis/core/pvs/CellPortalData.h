@@ -53,4 +53,13 @@ struct CellPortalData
     std::vector<SourceCellVisibility> sources; ///< one per cell
     BakeStatistics statistics;
 };
+
+/// The figures of `data`'s cells, portals and sources (everything but `statistics` itself), as the
+/// bake and the merge of split bakes both record them.
+BakeStatistics bakeStatisticsOf(const CellPortalData& data);
+/// A source cell not baked in this file (a range of a split bake): no stab tree, empty sets of the
+/// right capacities.
+SourceCellVisibility placeholderSource(std::size_t cellCount, std::size_t objectCount);
+/// True for a source that placeholderSource could have made.
+bool isPlaceholderSource(const SourceCellVisibility& source);
 } // namespace osgVis::core

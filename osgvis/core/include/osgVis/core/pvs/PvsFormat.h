@@ -10,6 +10,8 @@
 #include <osgVis/core/pvs/ViewCellPvs.h>
 
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,6 +42,10 @@ struct PvsFile
     /// code filling only `data`, as for version 1, still writes it.
     bool hasCellPortal = true;
     CellPortalData data;
+    /// With hasCellPortal, a range file of a split bake (osgvispvs --cells, --shard, MPI units):
+    /// only source cells [first, end) are baked and every other source is a placeholder
+    /// (isPlaceholderSource). Nothing may use it as visibility; mergeCellPortalPvs joins ranges.
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> sourceRange;
     bool hasViewCells = false;
     ViewCellPvs viewCells;                    ///< its sets have capacity data.objectCount
     std::uint32_t version = PvsFormatVersion; ///< as read; encodePvs writes PvsFormatVersion whatever it says
