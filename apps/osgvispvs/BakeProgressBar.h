@@ -16,11 +16,18 @@ public:
     BakeProgressBar(std::FILE* out, bool live);
     // The bake's progress callback: `done` of `total` source cells searched.
     void update(std::size_t done, std::size_t total);
+    // A bake in units: units and cells done of all (finished in earlier runs included), and the
+    // cells this run baked, from which the rate and the ETA come.
+    void updateUnits(std::size_t unitsDone, std::size_t units, std::size_t cellsDone, std::size_t cells,
+                     std::size_t cellsThisRun);
     // The closing line: cells and seconds; ends the bar's line when one was drawn.
     void finish(std::size_t cells, double seconds);
+    // The bake stopped short: ends the bar's line, if one was drawn, and says nothing more.
+    void interrupt();
 
 private:
     void draw(std::size_t done, std::size_t total, double elapsed);
+    bool due(bool last); // a redraw now (never more than five a second, always the last one)
 
     std::FILE* _out;
     bool _live;

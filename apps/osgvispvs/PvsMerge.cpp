@@ -3,6 +3,7 @@
 
 #include "PvsToolOptions.h"
 
+#include <osgVis/core/pvs/CellPortalMerge.h>
 #include <osgVis/core/pvs/ViewCellMerge.h>
 
 #include <filesystem>
@@ -28,10 +29,11 @@ std::string pvsMergeUsage()
 {
     return "usage: osgvispvs merge IN1.pvs IN2.pvs ... -o OUT.pvs [--complete]\n"
            "\n"
-           "Joins .pvs files that each hold a range of the view cells of one bake (the same model, method,\n"
-           "options and near distance) into OUT.pvs, cells in ascending index; OUT.pvs names the model of\n"
-           "IN1.pvs relative to its own folder. Refuses files of another model or bake, cell-portal files\n"
-           "and cells that come twice.\n"
+           "Joins .pvs files that each hold a range of the cells of one bake (osgvispvs --cells or\n"
+           "--shard; the same model, method, options and near distance) into OUT.pvs, cells in ascending\n"
+           "index: multifocal view cells, or the source cells of one cell-portal subdivision. OUT.pvs\n"
+           "names the model of IN1.pvs relative to its own folder. Refuses files of another model or\n"
+           "bake, view-cell and cell-portal files together, and cells that come twice.\n"
            "\n"
            "  -o, --output OUT.pvs   the merged file (required; may be one of the inputs)\n"
            "  --complete             also refuse when a cell of the bake is in no input\n"
@@ -96,12 +98,19 @@ int runPvsMerge(const std::vector<std::string>& arguments)
         core::ViewCellMergeOptions options;
         options.requireAllCells = o.complete;
         options.inputNames = o.inputs;
-        core::PvsFile merged = core::mergeViewCellPvs(ranges, options);
+        const bool cellPortal = ranges.front().hasCellPortal;
+        core::PvsFile merged =
+            cellPortal ? core::mergeCellPortalPvs(ranges, options) : core::mergeViewCellPvs(ranges, options);
         merged.modelPath = modelPathFrom(o.inputs.front(), ranges.front().modelPath, o.output);
         core::writePvsFile(o.output, merged);
-        const core::ViewCellPvs& cells = merged.viewCells;
-        std::cout << "merged " << o.inputs.size() << " files into " << o.output << ": " << cells.cellIndices.size()
-                  << " of the " << cells.totalCells << " cells of the bake, model '" << merged.modelPath << "'\n";
+        std::size_t held = merged.viewCells.cellIndices.size(), total = merged.viewCells.totalCells;
+        if (cellPortal)
+        {
+            total = merged.data.sources.size();
+            held = merged.sourceRange ? merged.sourceRange->second - merged.sourceRange->first : total;
+        }
+        std::cout << "merged " << o.inputs.size() << " files into " << o.output << ": " << held << " of the " << total
+                  << (cellPortal ? " source cells" : " cells") << " of the bake, model '" << merged.modelPath << "'\n";
         return 0;
     }
     catch (const std::exception& e)

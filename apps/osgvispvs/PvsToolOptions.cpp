@@ -107,11 +107,25 @@ std::string pvsToolUsage()
            "  osgVis::Cell markers in the model; else the walk beside the model (its stem + .walk),\n"
            "  else a grid over the model's bounds.\n"
            "  --cell-size X,Y,Z      cell edges (default: 1/50 of the model's diagonal each)\n"
-           "  --cells A:B            bake cells A to B-1 of that list only (join ranges with merge)\n"
            "  --near D               the near-plane reach views will have, at most (default: twice the\n"
            "                         walk's, else 1/1000 of the diagonal); farther-reaching views keep all\n"
            "  --plane-resolution N   pixels along each plane's longer side (default 100)\n"
            "  --planes N             planes per face of a cell (default 7)\n"
+           "\n"
+           "Splitting a bake (both methods; the output is byte-identical however it is split):\n"
+           "  --cells A:B            bake cells A to B-1 only (view cells, or cell-portal source cells)\n"
+           "                         into a range file; join range files with osgvispvs merge\n"
+           "  --shard K/N            the K-th of N equal cell ranges (1 <= K <= N), as --cells does;\n"
+           "                         --shard slurm takes K and N from a Slurm job array\n"
+           "                         (SLURM_ARRAY_TASK_ID, _MIN and _COUNT)\n"
+           "  --unit-cells N         cells per work unit (default: the cells in 1024 units for\n"
+           "                         multifocal, 128 for cellportal, at least 4 units a rank)\n"
+           "  Finished units go to OUT.pvs.units/ as they finish; the same command run again after a\n"
+           "  crash or kill bakes only the rest. The folder goes once OUT.pvs is written.\n"
+           "  Under mpirun (osgvispvs built with MPI): rank 0 hands units to the ranks as they finish,\n"
+           "  bakes too, and writes OUT.pvs; each rank loads the model. --threads is per rank\n"
+           "  (default: the cores divided among the ranks on a machine).\n"
+           "\n"
            "  --json FILE            also write the statistics as JSON to FILE\n"
            "  --progress             draw the progress bar even when stderr is not a terminal\n"
            "  --help                 this text\n"
@@ -122,8 +136,37 @@ std::string pvsToolUsage()
            "scene is empty), 2 bad command line.\n";
 }
 
-PvsToolOptions parsePvsToolOptions(int argc, char** argv)
+namespace
 {
+// "K/N" with 1 <= K <= N, or "slurm": this array task's K of N from Slurm's variables.
+std::pair<std::uint32_t, std::uint32_t> parseShard(const std::string& text, const char* (*environment)(const char*))
+{
+    if (text == "slurm")
+    {
+        const char* id = environment("SLURM_ARRAY_TASK_ID");
+        const char* count = environment("SLURM_ARRAY_TASK_COUNT");
+        const char* min = environment("SLURM_ARRAY_TASK_MIN");
+        if (!id || !count)
+            throw UsageError("--shard slurm needs SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT (run it in a Slurm "
+                             "job array, sbatch --array)");
+        const std::uint64_t n = parseCount("SLURM_ARRAY_TASK_COUNT", count, 1, 1000000);
+        const std::uint64_t first = min ? parseCount("SLURM_ARRAY_TASK_MIN", min, 0, 100000000) : 0;
+        const std::uint64_t task = parseCount("SLURM_ARRAY_TASK_ID", id, first, first + n - 1);
+        return {std::uint32_t(task - first + 1), std::uint32_t(n)};
+    }
+    const std::size_t slash = text.find('/');
+    if (slash == std::string::npos)
+        throw UsageError("--shard expects K/N (the K-th of N cell ranges, 1 <= K <= N) or slurm, got '" + text + "'");
+    const std::uint64_t n = parseCount("--shard", text.substr(slash + 1), 1, 1000000);
+    const std::uint64_t k = parseCount("--shard", text.substr(0, slash), 1, n);
+    return {std::uint32_t(k), std::uint32_t(n)};
+}
+} // namespace
+
+PvsToolOptions parsePvsToolOptions(int argc, char** argv, const char* (*environment)(const char*))
+{
+    if (!environment)
+        environment = [](const char* name) -> const char* { return std::getenv(name); };
     PvsToolOptions o;
     for (int i = 1; i < argc; ++i)
     {
@@ -201,6 +244,10 @@ PvsToolOptions parsePvsToolOptions(int argc, char** argv)
                 throw UsageError("--cells A:B needs A < B, got '" + range + "'");
             o.cellRange = std::make_pair(std::uint32_t(first), std::uint32_t(end));
         }
+        else if (arg == "--shard")
+            o.shard = parseShard(value(), environment);
+        else if (arg == "--unit-cells")
+            o.unitCells = std::uint32_t(parseCount(arg, value(), 1, 100000000));
         else if (!arg.empty() && arg[0] == '-')
             throw UsageError("unknown argument '" + arg + "'");
         else if (!o.modelFile.empty())
@@ -214,9 +261,11 @@ PvsToolOptions parsePvsToolOptions(int argc, char** argv)
         throw UsageError("missing the model to bake (osgvispvs MODEL -o OUT.pvs)");
     if (o.pvsFile.empty())
         throw UsageError("missing output path (-o OUT.pvs)");
-    const bool viewCellOptions = o.grid || !o.walkFile.empty() || o.cellSize.x > 0.0 || o.cellRange || o.nearDistance;
+    const bool viewCellOptions = o.grid || !o.walkFile.empty() || o.cellSize.x > 0.0 || o.nearDistance;
     if (o.method != "multifocal" && viewCellOptions)
-        throw UsageError("--grid, --walk, --cell-size, --cells and --near go with --method multifocal");
+        throw UsageError("--grid, --walk, --cell-size and --near go with --method multifocal");
+    if (o.cellRange && o.shard)
+        throw UsageError("give --cells or --shard, not both");
     if (o.grid && !o.walkFile.empty())
         throw UsageError("give --grid or --walk, not both");
     return o;

@@ -33,12 +33,15 @@ struct PvsToolOptions
     core::Vec3 cellSize{0.0};           // --cell-size X,Y,Z; 0: 1/50 of the model's diagonal
     core::Vec3 cellOrigin{0.0};         // --cell-origin X,Y,Z: a corner of the walk's grid
     std::optional<std::pair<std::uint32_t, std::uint32_t>> cellRange; // --cells A:B (B excluded)
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> shard;     // --shard K/N (1 <= K <= N), or from Slurm
+    std::uint32_t unitCells = 0; // --unit-cells N: cells per work unit; 0: the method's default
     bool forceProgress = false; // --progress: draw the bar even when stderr is no terminal
     bool help = false;          // --help
     bool version = false;       // --version
 };
 
-// Throws UsageError naming the offending argument.
-PvsToolOptions parsePvsToolOptions(int argc, char** argv);
+// Throws UsageError naming the offending argument. `environment` looks up variables
+// (SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT for --shard slurm); std::getenv by default.
+PvsToolOptions parsePvsToolOptions(int argc, char** argv, const char* (*environment)(const char*) = nullptr);
 std::string pvsToolUsage();
 } // namespace osgVis::pvstool

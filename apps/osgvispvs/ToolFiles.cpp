@@ -37,20 +37,21 @@ std::string modelPathFromPvs(const std::string& modelFile, const std::string& pv
     return relative.empty() ? model.generic_string() : relative.generic_string();
 }
 
-LoadedModel loadModelToBake(const PvsToolOptions& o)
+LoadedModel loadModelToBake(const PvsToolOptions& o, bool workerRank)
 {
     std::error_code error;
     if (!fs::exists(o.modelFile, error))
         throw ToolError("model file '" + o.modelFile + "' does not exist");
-    checkWritable(o.pvsFile, "the .pvs file");
-    if (!o.jsonFile.empty())
+    if (!workerRank)
+        checkWritable(o.pvsFile, "the .pvs file");
+    if (!o.jsonFile.empty() && !workerRank)
         checkWritable(o.jsonFile, "the JSON file");
     LoadedModel loaded;
     loaded.model = osgDB::readRefNodeFile(o.modelFile);
     if (!loaded.model)
         throw ToolError("cannot read model '" + o.modelFile +
                         "' (not a model osgDB can read, or no plugin for its extension)");
-    if (const std::string repaired = repairLoadedModel(*loaded.model, o.modelFile); !repaired.empty())
+    if (const std::string repaired = repairLoadedModel(*loaded.model, o.modelFile); !repaired.empty() && !workerRank)
         std::cerr << "model '" << o.modelFile << "': " << repaired << "\n";
     ExtractionOptions extraction;
     extraction.keepTriangles = true; // both bakes work on the model's faces

@@ -32,5 +32,7 @@ struct LoadedModel
 // Checks the outputs (-o, --json) can be written, reads the model with osgDB, repairs it as the
 // .pvs plugin and the apps do (so the bake sees the drawn scene) and extracts it with triangles.
 // Throws ToolError for a missing or unreadable model or one without drawables.
-LoadedModel loadModelToBake(const PvsToolOptions& options);
+// `workerRank`: an MPI rank other than 0, which writes no file (its machine may not even see the
+// output's folder) and leaves the note on repairs to rank 0.
+LoadedModel loadModelToBake(const PvsToolOptions& options, bool workerRank = false);
 } // namespace osgVis::pvstool

@@ -222,8 +222,10 @@ TEST(PvsTool, MergeRefusesWhatDoesNotBelongNamingIt)
                       " were baked for different models (geometry fingerprint 0x1111222233334445 and "
                       "0x1111222233334444)");
     osgVis::core::writePvsFile((dir / "cells.pvs").string(), osgVis::test::makeCellPortalSample());
-    expectFailure("merge " + quoted(dir / "cells.pvs") + o, 1,
+    expectFailure("merge " + quoted(a) + " " + quoted(dir / "cells.pvs") + o, 1,
                   "osgvispvs merge: cannot merge " + (dir / "cells.pvs").string() + ": it holds no view cells");
+    expectFailure("merge " + quoted(dir / "cells.pvs") + " " + quoted(a) + o, 1,
+                  "osgvispvs merge: cannot merge " + a.string() + ": it holds no cell-portal data");
     expectFailure("merge " + quoted(dir / "missing.pvs") + o, 1,
                   "osgvispvs merge: cannot open .pvs file '" + (dir / "missing.pvs").string() + "'");
     expectFailure("merge " + quoted(a) + " -o /nonexistent-osgvis-dir/x.pvs", 1,
@@ -280,7 +282,7 @@ TEST(PvsTool, RefusesBadViewCellsNamingThem)
 {
     const fs::path model = writeSmallOffice();
     const std::string o = " -o " + quoted(model.parent_path() / "x.pvs");
-    expectFailure(quoted(model) + o + " --grid 0,0,0,1,1,1", 2, "--grid, --walk, --cell-size, --cells and --near go with --method multifocal");
+    expectFailure(quoted(model) + o + " --grid 0,0,0,1,1,1", 2, "--grid, --walk, --cell-size and --near go with --method multifocal");
     expectFailure(quoted(model) + o + " --method multifocal --cell-size 0,1,1", 2, "--cell-size must be positive along every axis");
     expectFailure(quoted(model) + o + " --method multifocal --cell-size -1,1,1", 2, "--cell-size must be positive along every axis");
     expectFailure(quoted(model) + o + " --method multifocal --grid 0,0,0,1,1", 2, "--grid expects 6 comma-separated numbers");
