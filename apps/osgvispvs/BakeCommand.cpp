@@ -43,8 +43,9 @@ unsigned hardwareThreads()
     return std::max(1u, std::thread::hardware_concurrency());
 }
 
-// Rank 0 (or the only process): resume, bake what is missing, join, write, report.
-int lead(const PvsToolOptions& o, const BakeJob& job, MpiBake* mpi)
+} // namespace
+
+int leadBake(const PvsToolOptions& o, const BakeJob& job, MpiBake* mpi)
 {
     const auto start = std::chrono::steady_clock::now();
     // Until the dispatch starts, other ranks wait for their first answer: a failure here stops them.
@@ -60,15 +61,11 @@ int lead(const PvsToolOptions& o, const BakeJob& job, MpiBake* mpi)
         }
     } release{mpi};
     int rankCount = 1;
-    unsigned threads = o.bake.threads ? o.bake.threads : hardwareThreads();
 #ifdef OSGVIS_WITH_MPI
     if (mpi)
-    {
         rankCount = mpi->size();
-        if (!o.bake.threads)
-            threads = std::max(1u, hardwareThreads() / unsigned(std::max(mpi->localSize(), 1)));
-    }
 #endif
+    const unsigned threads = threadsPerRank(o, mpi);
     const auto [first, end] = job.cellsToBake();
     const std::uint32_t unitCount = std::max(job.defaultUnitCount(), std::uint32_t(4 * rankCount));
     const std::uint32_t cellsPerUnit = o.unitCells ? o.unitCells : cellsPerUnitFor(job.cellCount(), unitCount);
@@ -110,6 +107,7 @@ int lead(const PvsToolOptions& o, const BakeJob& job, MpiBake* mpi)
                         state.folder().string() + "': run the same command again to bake the rest");
     }
 
+    const auto joinStart = std::chrono::steady_clock::now();
     core::PvsFile output = job.join(state.read(units), o.pvsFile);
     try
     {
@@ -121,15 +119,56 @@ int lead(const PvsToolOptions& o, const BakeJob& job, MpiBake* mpi)
     }
     state.remove(units);
     BakeRunFigures figures;
-    figures.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto now = std::chrono::steady_clock::now();
+    figures.seconds = std::chrono::duration<double>(now - start).count();
+    figures.joinSeconds = std::chrono::duration<double>(now - joinStart).count();
     figures.unitsBaked = std::uint32_t(progress.unitsBaked());
     figures.unitsResumed = std::uint32_t(resumed);
     figures.ranks = rankCount;
     bar.finish(end - first, figures.seconds);
+    std::fprintf(stderr, "joined %zu units (%zu baked now, %zu resumed, %d rank%s) in %.3f s\n", units.size(),
+                 std::size_t(figures.unitsBaked), resumed, rankCount, rankCount == 1 ? "" : "s", figures.joinSeconds);
     job.report(output, figures);
     return 0;
 }
-} // namespace
+
+MpiSession::MpiSession(int& argc, char**& argv)
+{
+#ifdef OSGVIS_WITH_MPI
+    if (MpiBake::launchedByMpirun())
+        _ranks = new MpiBake(argc, argv);
+#else
+    (void)argc;
+    (void)argv;
+#endif
+}
+
+MpiSession::~MpiSession()
+{
+#ifdef OSGVIS_WITH_MPI
+    delete _ranks;
+#endif
+}
+
+bool MpiSession::worker() const
+{
+#ifdef OSGVIS_WITH_MPI
+    return _ranks && _ranks->rank() != 0;
+#else
+    return false;
+#endif
+}
+
+unsigned threadsPerRank(const PvsToolOptions& o, MpiBake* mpi)
+{
+    if (o.bake.threads)
+        return o.bake.threads;
+#ifdef OSGVIS_WITH_MPI
+    if (mpi)
+        return std::max(1u, hardwareThreads() / unsigned(std::max(mpi->localSize(), 1)));
+#endif
+    return hardwareThreads();
+}
 
 int runBake(const PvsToolOptions& o, MpiBake* mpi)
 {
@@ -166,10 +205,10 @@ int runBake(const PvsToolOptions& o, MpiBake* mpi)
                 mpi->stopAll();
             throw;
         }
-        return lead(o, *prepared.job, mpi);
+        return leadBake(o, *prepared.job, mpi);
     }
 #endif
     const PreparedBake prepared = prepare(o, false);
-    return lead(o, *prepared.job, mpi);
+    return leadBake(o, *prepared.job, mpi);
 }
 } // namespace osgVis::pvstool

@@ -21,6 +21,7 @@ namespace osgVis::pvstool
 struct BakeRunFigures
 {
     double seconds = 0.0;           ///< this run's wall-clock time
+    double joinSeconds = 0.0;       ///< of which reading the units' files, joining and writing the output
     std::uint32_t unitsBaked = 0;   ///< by this run
     std::uint32_t unitsResumed = 0; ///< found finished in the state folder
     int ranks = 1;

@@ -38,7 +38,7 @@ public:
 
     std::uint32_t cellCount() const override { return std::uint32_t(_plan.cellCount()); }
     std::pair<std::uint32_t, std::uint32_t> cellsToBake() const override { return _range; }
-    std::uint32_t defaultUnitCount() const override { return 128; }
+    std::uint32_t defaultUnitCount() const override { return 64; }
     std::vector<double> cellCosts() const override { return _plan.sourceCostEstimates(); }
 
     core::PvsFile bakeUnit(std::uint32_t first, std::uint32_t end) const override

@@ -119,7 +119,7 @@ std::string pvsToolUsage()
            "                         --shard slurm takes K and N from a Slurm job array\n"
            "                         (SLURM_ARRAY_TASK_ID, _MIN and _COUNT)\n"
            "  --unit-cells N         cells per work unit (default: the cells in 1024 units for\n"
-           "                         multifocal, 128 for cellportal, at least 4 units a rank)\n"
+           "                         multifocal, 64 for cellportal, at least 4 units a rank)\n"
            "  Finished units go to OUT.pvs.units/ as they finish; the same command run again after a\n"
            "  crash or kill bakes only the rest. The folder goes once OUT.pvs is written.\n"
            "  Under mpirun (osgvispvs built with MPI): rank 0 hands units to the ranks as they finish,\n"

@@ -246,7 +246,8 @@ void ViewCellBakeJob::report(const core::PvsFile& output, const BakeRunFigures& 
         json << "null";
     json << ",\n  \"bake_seconds\": " << run.seconds << ",\n  \"seconds_per_cell\": " << run.seconds / cells
          << ",\n  \"ranks\": " << run.ranks << ",\n  \"units_baked\": " << run.unitsBaked
-         << ",\n  \"units_resumed\": " << run.unitsResumed << ",\n  \"file_bytes\": " << bytes
+         << ",\n  \"units_resumed\": " << run.unitsResumed << ",\n  \"join_seconds\": " << run.joinSeconds
+         << ",\n  \"file_bytes\": " << bytes
          << ",\n  \"bytes_per_cell\": " << double(bytes) / cells << ",\n  \"near\": " << _options.nearDistance
          << ",\n  \"options\": \"" << output.options << "\"\n}\n";
     if (!json.flush())

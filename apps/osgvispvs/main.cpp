@@ -7,14 +7,10 @@
 #include "BakeCommand.h"
 #include "PvsMerge.h"
 #include "PvsToolOptions.h"
-#ifdef OSGVIS_WITH_MPI
-#include "MpiBake.h"
-#endif
 
 #include <osgVis/Version>
 
 #include <iostream>
-#include <memory>
 
 using namespace osgVis::pvstool;
 
@@ -42,18 +38,10 @@ int main(int argc, char** argv)
         std::cout << "osgvispvs (osgVis " << osgVisGetVersion() << ")\n";
         return 0;
     }
-    MpiBake* ranks = nullptr;
-#ifdef OSGVIS_WITH_MPI
-    std::unique_ptr<MpiBake> mpi;
-    if (MpiBake::launchedByMpirun())
-    {
-        mpi = std::make_unique<MpiBake>(argc, argv);
-        ranks = mpi.get();
-    }
-#endif
+    const MpiSession mpi(argc, argv);
     try
     {
-        return runBake(options, ranks);
+        return runBake(options, mpi.ranks());
     }
     catch (const std::exception& e)
     {

@@ -72,7 +72,7 @@ struct SplitBake : ::testing::Test
 TEST(BakeUnits, GridDependsOnTheCellsAloneAndTheDearestComeFirst)
 {
     EXPECT_EQ(osgVis::pvstool::cellsPerUnitFor(470, 1024), 1u);
-    EXPECT_EQ(osgVis::pvstool::cellsPerUnitFor(1749, 128), 14u);
+    EXPECT_EQ(osgVis::pvstool::cellsPerUnitFor(1749, 64), 28u);
     EXPECT_EQ(osgVis::pvstool::cellsPerUnitFor(0, 128), 1u);
     // A range cut from the grid keeps the grid's boundaries.
     const std::vector<BakeUnit> units = osgVis::pvstool::splitIntoUnits(5, 17, 4);
