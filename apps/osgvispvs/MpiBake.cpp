@@ -107,7 +107,27 @@ void MpiBake::dispatch(const BakeJob& job, UnitQueue& queue, BakeState& state, U
 {
     // Rank 0's own share runs beside the dispatch loop; it calls no MPI.
     std::thread own([&] { bakeUnitsHere(job, queue, state, progress, 1, threads, failure); });
+    // Each rank holds two units: the one it bakes and the next, already in its queue, so that it
+    // never waits for rank 0 between units. A rank is done once told to stop with nothing in flight.
+    constexpr int UnitsAhead = 2;
+    std::vector<int> inFlight(std::size_t(_size), 0);
+    std::vector<char> stopped(std::size_t(_size), 0);
     int working = _size - 1;
+    const auto handOut = [&](int to)
+    {
+        if (stopped[to])
+            return;
+        if (const std::optional<BakeUnit> next = queue.next())
+        {
+            sendUnit(to, *next);
+            ++inFlight[to];
+        }
+        else
+        {
+            sendStop(to);
+            stopped[to] = 1;
+        }
+    };
     auto idle = std::chrono::microseconds(20);
     while (working > 0)
     {
@@ -118,7 +138,7 @@ void MpiBake::dispatch(const BakeJob& job, UnitQueue& queue, BakeState& state, U
         {
             // Blocking receives spin a core in Open MPI; a short sleep leaves it to the bake.
             std::this_thread::sleep_for(idle);
-            idle = std::min(idle * 2, std::chrono::microseconds(1000));
+            idle = std::min(idle * 2, std::chrono::microseconds(250));
             continue;
         }
         idle = std::chrono::microseconds(20);
@@ -128,11 +148,14 @@ void MpiBake::dispatch(const BakeJob& job, UnitQueue& queue, BakeState& state, U
         {
             failure.record("rank " + std::to_string(from) + ": " + std::string(message.begin(), message.end()));
             queue.stop();
+            stopped[from] = 1; // it has left: nothing more comes from it
+            inFlight[from] = 0;
             --working;
             continue;
         }
         if (status.MPI_TAG == TagResult)
         {
+            --inFlight[from];
             BakeUnit unit;
             if (const std::string why = storeResult(job, state, message, unit); why.empty())
                 progress.finished(unit);
@@ -142,14 +165,13 @@ void MpiBake::dispatch(const BakeJob& job, UnitQueue& queue, BakeState& state, U
                                std::to_string(unit.first) + ":" + std::to_string(unit.end) + ": " + why);
                 queue.stop();
             }
+            handOut(from);
         }
-        if (const std::optional<BakeUnit> next = queue.next())
-            sendUnit(from, *next);
-        else
-        {
-            sendStop(from);
+        else // the first request
+            for (int k = 0; k < UnitsAhead; ++k)
+                handOut(from);
+        if (stopped[from] && inFlight[from] == 0)
             --working;
-        }
     }
     own.join();
 }

@@ -2,11 +2,13 @@
 #pragma once
 // A bake over MPI ranks (built with OSGVIS_WITH_MPI): rank 0 hands out units dearest first as ranks
 // ask, bakes units itself on a worker thread meanwhile, checks and stores every result in the state
-// folder and writes the output; the other ranks ask, bake and send back until told to stop. One
-// unit is in flight per rank; only the main thread of a rank calls MPI (MPI_THREAD_FUNNELED).
+// folder and writes the output; the other ranks ask, bake and send back until told to stop.
+// Only the main thread of a rank calls MPI (MPI_THREAD_FUNNELED).
 //
 // Messages: a rank sends REQUEST (first ask), RESULT (first cell, end cell, the unit's .pvs bytes;
-// also the next ask) or FAILURE (text); rank 0 answers UNIT (first, end) or STOP.
+// also the next ask) or FAILURE (text); rank 0 answers UNIT (first, end) or STOP, two UNITs to the
+// first request, so that every rank has its next unit queued while it bakes one (no wait between
+// units). After STOP a rank finishes the unit it still holds.
 #include "BakeRun.h"
 
 #include <string>
