@@ -15,7 +15,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -161,7 +163,9 @@ TEST_F(SplitBake, KilledBakeRunAgainBakesTheRestAndGivesTheSameFile)
     for (const std::string& method : {std::string(), MultifocalCells})
     {
         const std::string whole = bake("whole.pvs", method + " --unit-cells 1");
-        const AppRun killed = osgvispvs(quoted(model) + " -o " + quoted(dir / "k.pvs") + method + " --unit-cells 1",
+        // One worker thread: with two, a second unit may land between the fifth and the kill.
+        const AppRun killed = osgvispvs(quoted(model) + " -o " + quoted(dir / "k.pvs") + method +
+                                            " --unit-cells 1 --threads 1",
                                         "OSGVISPVS_KILL_AFTER_UNITS=5");
         EXPECT_EQ(killed.exitCode, 128 + 9) << killed.output;
         EXPECT_FALSE(fs::exists(dir / "k.pvs"));
@@ -177,25 +181,39 @@ TEST_F(SplitBake, KilledBakeRunAgainBakesTheRestAndGivesTheSameFile)
 TEST_F(SplitBake, CorruptAndForeignUnitFilesAreBakedAgain)
 {
     const std::string whole = bake("whole.pvs", MultifocalCells + " --unit-cells 1");
-    // A state folder with a truncated unit, a unit of another option set, garbage and a stale
-    // temporary file from a kill mid-write.
-    const AppRun killed = osgvispvs(quoted(model) + " -o " + quoted(dir / "k.pvs") + MultifocalCells + " --unit-cells 1",
+    // A state folder with a truncated unit, a unit of another option set, garbage, a good one and
+    // a stale temporary file from a kill mid-write.
+    const AppRun killed = osgvispvs(quoted(model) + " -o " + quoted(dir / "k.pvs") + MultifocalCells +
+                                        " --unit-cells 1 --threads 1",
                                     "OSGVISPVS_KILL_AFTER_UNITS=4");
     ASSERT_EQ(killed.exitCode, 128 + 9) << killed.output;
     const fs::path units = dir / "k.pvs.units";
-    fs::resize_file(units / "cells-00000000-00000001.pvs", 60);
+    // The units finished dearest first, so which four are there is the estimate's choice: the
+    // first three (in name order) are spoilt, the fourth stays good.
+    std::vector<fs::path> finished;
+    for (const fs::directory_entry& entry : fs::directory_iterator(units))
+        finished.push_back(entry.path());
+    std::sort(finished.begin(), finished.end());
+    ASSERT_EQ(finished.size(), 4u);
+    const auto [first, end] = [](const fs::path& file)
+    {
+        const std::string name = file.filename().string(); // cells-AAAAAAAA-BBBBBBBB.pvs
+        return std::make_pair(std::stoul(name.substr(6, 8)), std::stoul(name.substr(15, 8)));
+    }(finished[1]);
+    fs::resize_file(finished[0], 60);
     bake("other.pvs", " --method multifocal --grid 0,0,0.7,12,8,2.7 --cell-size 2,2,2 --plane-resolution 16"
-                      " --planes 1 --near 0.3 --cells 1:2");
-    fs::copy_file(dir / "other.pvs", units / "cells-00000001-00000002.pvs", fs::copy_options::overwrite_existing);
-    std::ofstream(units / "cells-00000002-00000003.pvs") << "not a pvs";
+                      " --planes 1 --near 0.3 --cells " + std::to_string(first) + ":" + std::to_string(end));
+    fs::copy_file(dir / "other.pvs", finished[1], fs::copy_options::overwrite_existing);
+    std::ofstream(finished[2]) << "not a pvs";
     std::ofstream(units / "cells-00000009-00000010.pvs.tmp") << "half";
     const AppRun resumed = osgvispvs(quoted(model) + " -o " + quoted(dir / "k.pvs") + MultifocalCells + " --unit-cells 1");
     ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
-    EXPECT_NE(resumed.output.find("baking again cells-00000000-00000001.pvs: "), std::string::npos) << resumed.output;
+    const auto again = [&](std::size_t k) { return "baking again " + finished[k].filename().string() + ": "; };
+    EXPECT_NE(resumed.output.find(again(0)), std::string::npos) << resumed.output;
     EXPECT_NE(resumed.output.find("truncated at byte 60"), std::string::npos) << resumed.output;
-    EXPECT_NE(resumed.output.find("baking again cells-00000001-00000002.pvs: baked with options"), std::string::npos)
+    EXPECT_NE(resumed.output.find(again(1) + "baked with options"), std::string::npos) << resumed.output;
+    EXPECT_NE(resumed.output.find(again(2) + finished[2].string() + ": not a .pvs file: bad magic"), std::string::npos)
         << resumed.output;
-    EXPECT_NE(resumed.output.find("baking again cells-00000002-00000003.pvs: "), std::string::npos) << resumed.output;
     EXPECT_NE(resumed.output.find("resuming: 1 of "), std::string::npos) << resumed.output;
     EXPECT_EQ(readText(dir / "k.pvs"), whole);
     EXPECT_FALSE(fs::exists(units));
