@@ -244,7 +244,9 @@ TEST(PvsTool, HelpAndVersionTellTheTruth)
     EXPECT_EQ(help.exitCode, 0);
     for (const char* option : {"-o, --output", "--min-coverage", "--min-face-area", "--min-cell-size", "--max-cells",
                                "--stab-budget", "--threads", "0 = all cores", "--json", "--progress", "--version",
-                               "(default 0.3)", "(default 50000)", "osgvispvs merge IN1.pvs IN2.pvs ... -o OUT.pvs"})
+                               "(default 0.3)", "(default 50000)", "osgvispvs merge IN1.pvs IN2.pvs ... -o OUT.pvs",
+                               "--cells A:B", "--shard K/N", "--shard slurm", "--unit-cells N", "OUT.pvs.units/",
+                               "Under mpirun"})
         EXPECT_NE(help.output.find(option), std::string::npos) << option << " in\n" << help.output;
     const AppRun mergeHelp = osgvispvs("merge --help");
     EXPECT_EQ(mergeHelp.exitCode, 0);
