@@ -64,7 +64,28 @@ void OcclusionMask::reset(std::uint32_t width, std::uint32_t height)
     _width = width;
     _height = height;
     _base.assign(std::size_t(width) * height, Uncovered);
+    _tileBound.assign(std::size_t(tileColumns()) * tileRows(), Uncovered);
     dropPyramid();
+}
+
+float* OcclusionMask::nearerRow(std::uint32_t y)
+{
+    if (!_levels.empty())
+        dropPyramid();
+    return _base.data() + std::size_t(y) * _width;
+}
+
+void OcclusionMask::recomputeTileBounds()
+{
+    std::fill(_tileBound.begin(), _tileBound.end(), -Uncovered);
+    const std::uint32_t columns = tileColumns();
+    for (std::uint32_t y = 0; y < _height; ++y)
+    {
+        float* bound = _tileBound.data() + std::size_t(y / TileSize) * columns;
+        const float* row = _base.data() + std::size_t(y) * _width;
+        for (std::uint32_t x = 0; x < _width; ++x)
+            bound[x / TileSize] = std::max(bound[x / TileSize], row[x]);
+    }
 }
 
 void OcclusionMask::dropPyramid()
@@ -108,6 +129,7 @@ void OcclusionMask::shrinkUnion(std::uint32_t pixels)
         windowMax(_base.data() + row, rowsDone + row, _width, 1, pixels, g + row, h + row);
     }
     windowMax(rowsDone, _base.data(), _height, _width, pixels, g, h);
+    recomputeTileBounds(); // erosion makes depths farther
 }
 
 void OcclusionMask::buildPyramid()

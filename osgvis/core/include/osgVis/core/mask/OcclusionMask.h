@@ -24,13 +24,28 @@ public:
 
     /// Level 0, row-major from the bottom row. +infinity = not covered.
     float depth(std::uint32_t x, std::uint32_t y) const { return _levels.empty() ? _base[y * _width + x] : _levels[0][y * _width + x]; }
-    /// Writing through baseRow() after buildPyramid() leaves the pyramid stale until it is built again.
-    float* baseRow(std::uint32_t y) { return _base.data() + std::size_t(y) * _width; }
     const float* baseRow(std::uint32_t y) const { return _base.data() + std::size_t(y) * _width; }
     /// Keeps the nearer of the stored and the given depth (a pixel fully covered by several occluders
     /// is hidden behind the nearest of them). Drops the pyramid. A NaN depth covers nothing.
     void cover(std::uint32_t x, std::uint32_t y, float depth);
     std::size_t coveredPixels() const;
+
+    /// Level 0 in tiles of TileSize × TileSize pixels, tile (tx, ty) = pixels [8tx, 8tx+8) × [8ty, 8ty+8).
+    static constexpr std::uint32_t TileSize = 8;
+    std::uint32_t tileColumns() const { return (_width + TileSize - 1) / TileSize; }
+    std::uint32_t tileRows() const { return (_height + TileSize - 1) / TileSize; }
+    /// An upper bound of the depths stored in a tile, over its pixels inside the mask (+infinity while
+    /// one of them is uncovered). A rasterizer may skip a tile where everything it could write is no
+    /// nearer than this: nothing there would change.
+    float tileBound(std::uint32_t tx, std::uint32_t ty) const { return _tileBound[std::size_t(ty) * tileColumns() + tx]; }
+    /// For a rasterizer that writes a tile at a time: row y of level 0, to be written with nearer
+    /// depths only (a bound must stay an upper bound), then setTileBound() with the tile's new largest
+    /// depth over its pixels inside the mask. Drops the pyramid.
+    float* nearerRow(std::uint32_t y);
+    void setTileBound(std::uint32_t tx, std::uint32_t ty, float largestDepth)
+    {
+        _tileBound[std::size_t(ty) * tileColumns() + tx] = largestDepth;
+    }
 
     /// mask-approx only: the paper's shrinking of the fused union. A pixel stays covered only when
     /// every pixel within Chebyshev distance `pixels` is covered; its depth becomes the largest
@@ -56,11 +71,13 @@ public:
 
 private:
     void dropPyramid();
+    void recomputeTileBounds();
     bool texelHidden(std::size_t level, std::uint32_t tx, std::uint32_t ty, const std::uint32_t pixels[4],
                      float nearestDepth) const;
 
     std::uint32_t _width = 0, _height = 0;
     std::vector<float> _base;
+    std::vector<float> _tileBound; ///< per tile, row-major; cover() only lowers depths, so it keeps them
     std::vector<std::vector<float>> _levels; ///< _levels[0] == _base once built
     std::vector<std::uint32_t> _levelWidth, _levelHeight;
     std::vector<std::vector<float>> _spareLevels; ///< dropped levels keep their memory for the next build
