@@ -520,9 +520,9 @@ TEST(MaskRasterizer, VectorAndScalarPathsAgreeBitForBit)
         scalar.reset(96, 80);
         vector.reset(96, 80);
         const std::size_t scalarCount =
-            rasterizeOccluderGroupWith(MaskRasterPath::Scalar, scalar, group.data(), group.size(), shrink, scratch);
+            rasterizeOccluderGroupReference(MaskRasterPath::Scalar, scalar, group.data(), group.size(), shrink, scratch);
         const std::size_t vectorCount =
-            rasterizeOccluderGroupWith(MaskRasterPath::Simd, vector, group.data(), group.size(), shrink, scratch);
+            rasterizeOccluderGroupReference(MaskRasterPath::Simd, vector, group.data(), group.size(), shrink, scratch);
         ASSERT_EQ(scalarCount, vectorCount) << groupIndex;
         for (std::uint32_t y = 0; y < 80; ++y)
             ASSERT_EQ(std::memcmp(scalar.baseRow(y), vector.baseRow(y), 96 * sizeof(float)), 0)

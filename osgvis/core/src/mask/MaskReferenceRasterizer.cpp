@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Conservative rasterization of occluder groups into the occlusion mask (the "fully covered pixels
-// only" mask of Wang, Agarwal & Har-Peled). Per polygon, signed edge distances decide for every
+// The reference rasterizer of occluder groups into the occlusion mask (the "fully covered pixels
+// only" mask of Wang, Agarwal & Har-Peled), pixel by pixel: the tile rasterizer (MaskRasterizer.cpp)
+// is tested against it. Per polygon, signed edge distances decide for every
 // pixel square (grown by the shrink) whether it touches the polygon (separating-axis test on the
 // polygon's edge normals plus its bounding box, exact for a convex polygon and a square) and
 // whether it lies inside each outline edge; a pixel is covered when it touches some polygon and
@@ -10,6 +11,7 @@
 // value computed in double, so a lane's float error is ~1e-6 px near a threshold; lanes within
 // 1e-4 px of any threshold are re-decided in double, so coverage is the double-precision answer.
 // Depths are rounded away from the viewer by a relative margin that exceeds the float error.
+#include "MaskPolygonSetup.h"
 #include "MaskRasterPaths.h"
 
 #include <algorithm>
@@ -25,166 +27,13 @@ namespace osgVis::core
 {
 namespace
 {
+using namespace maskraster;
+
 constexpr std::uint8_t Touched = 1;
 constexpr std::uint8_t Vetoed = 2;
 constexpr int Lanes = 4;
-// Polygons with more edges are vetoed (never trusted) rather than tracked in a heap array.
-constexpr std::size_t MaxEdges = 64;
-// Float lanes this close (px) to a threshold are re-decided in double.
-constexpr float Ambiguity = 1e-4f;
 // Exceeds the float lanes' relative depth error (a few 2^-24) with room for the final rounding.
 constexpr float DepthRelativeMargin = 1e-6f;
-// Relative size below which areas, cross products and edge lengths count as zero.
-constexpr double RelativeTolerance = 1e-12;
-constexpr float InfiniteDepth = std::numeric_limits<float>::infinity();
-
-struct PixelRange
-{
-    int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
-    bool empty() const { return x0 > x1 || y0 > y1; }
-};
-
-// Pixels p of [0, size) whose square grown by `shrink`, [p - s, p + 1 + s], meets [lo, hi]; a hair
-// wider than exact so that rounding never loses a touching pixel.
-bool grownSpan(double lo, double hi, double shrink, std::uint32_t size, int& first, int& last)
-{
-    const double slack = RelativeTolerance * (1.0 + std::abs(lo) + std::abs(hi) + shrink);
-    const double a = std::max(std::ceil(lo - 1.0 - shrink - slack), 0.0);
-    const double b = std::min(std::floor(hi + shrink + slack), double(size) - 1.0);
-    if (!(a <= b))
-        return false;
-    first = int(a);
-    last = int(b);
-    return true;
-}
-
-enum class Shape
-{
-    Convex,
-    Degenerate, // vetoes its grown bounding box
-    NonFinite   // what it touches is unknown: the whole group is untrusted
-};
-
-// One polygon ready for the inner loop. Edge e: f_e(p) = n_e·p + offset_e is the signed distance
-// (px) of p inside the edge line; the grown square centred at p reaches reach_e = (|n.x|+|n.y|)·h
-// along n_e (h = 0.5 + shrink), so it lies inside when f_e ≥ reach_e and is separated when
-// f_e < -reach_e.
-struct PolygonSetup
-{
-    PixelRange pixels; // its grown bounding box, clipped to the mask
-    std::size_t edgeCount = 0;
-    std::array<double, MaxEdges> nx, ny, offset, reach;
-    std::array<bool, MaxEdges> outline;
-    std::array<float, MaxEdges> slope, reachF, insideLimit; // insideLimit: -inf for shared edges
-    // Largest depth over the grown square centred at p, in the affine form v = da·x + db·y + dc:
-    // the smallest 1/depth (perspective) or the largest depth (orthographic) over its corners.
-    double da = 0.0, db = 0.0, dc = 0.0;
-    float depthSlope = 0.0f, depthSlopeReach = 0.0f, depthAbsMargin = 0.0f;
-    bool inverse = true;
-};
-
-Shape setupPolygon(const ScreenPolygon& polygon, double shrink, const OcclusionMask& mask, PolygonSetup& setup)
-{
-    const std::vector<glm::dvec2>& v = polygon.vertices;
-    double minX = std::numeric_limits<double>::infinity(), minY = minX, maxX = -minX, maxY = -minX;
-    for (const glm::dvec2& p : v)
-    {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y))
-            return Shape::NonFinite;
-        minX = std::min(minX, p.x);
-        maxX = std::max(maxX, p.x);
-        minY = std::min(minY, p.y);
-        maxY = std::max(maxY, p.y);
-    }
-    setup.pixels = PixelRange{};
-    if (v.empty())
-        return Shape::Degenerate; // touches nothing
-    PixelRange& r = setup.pixels;
-    if (!grownSpan(minX, maxX, shrink, mask.width(), r.x0, r.x1) ||
-        !grownSpan(minY, maxY, shrink, mask.height(), r.y0, r.y1))
-        r = PixelRange{};
-
-    const DepthPlane& plane = polygon.depth;
-    const std::size_t n = v.size();
-    if (n < 3 || n > MaxEdges || !std::isfinite(plane.a) || !std::isfinite(plane.b) || !std::isfinite(plane.c))
-        return Shape::Degenerate;
-    const double size = std::max(maxX - minX, maxY - minY);
-    double twiceArea = 0.0;
-    for (std::size_t i = 1; i + 1 < n; ++i)
-    {
-        const glm::dvec2 a = v[i] - v[0], b = v[i + 1] - v[0];
-        twiceArea += a.x * b.y - a.y * b.x;
-    }
-    if (!(std::abs(twiceArea) > RelativeTolerance * size * size))
-        return Shape::Degenerate;
-    const double orientation = twiceArea > 0.0 ? 1.0 : -1.0;
-
-    // Convex = every turn the same way (collinear allowed, reversals not) and the direction sweeps
-    // round once (its x and y components change sign at most twice each), which rules out stars.
-    const double h = 0.5 + shrink;
-    std::size_t count = 0;
-    std::array<glm::dvec2, MaxEdges> direction;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        const glm::dvec2 d = v[(i + 1) % n] - v[i];
-        const double length = std::sqrt(d.x * d.x + d.y * d.y);
-        if (!(length > RelativeTolerance * size))
-            continue; // a repeated vertex bounds nothing
-        const double nx = -orientation * d.y / length, ny = orientation * d.x / length;
-        direction[count] = d / length;
-        setup.nx[count] = nx;
-        setup.ny[count] = ny;
-        setup.offset[count] = -(nx * v[i].x + ny * v[i].y);
-        setup.reach[count] = (std::abs(nx) + std::abs(ny)) * h;
-        setup.outline[count] = !(i < polygon.sharedEdge.size() && polygon.sharedEdge[i]);
-        setup.slope[count] = float(nx);
-        setup.reachF[count] = float(setup.reach[count]);
-        setup.insideLimit[count] = setup.outline[count] ? setup.reachF[count] : -InfiniteDepth;
-        ++count;
-    }
-    if (count < 3)
-        return Shape::Degenerate;
-    int xSignChanges = 0, ySignChanges = 0;
-    double lastX = 0.0, lastY = 0.0;
-    for (std::size_t i = 0; i < 2 * count; ++i) // twice round, counting the changes of the second lap
-    {
-        const glm::dvec2 a = direction[i % count], b = direction[(i + 1) % count];
-        const double turn = a.x * b.y - a.y * b.x;
-        if (turn * orientation < -RelativeTolerance ||
-            (std::abs(turn) <= RelativeTolerance && a.x * b.x + a.y * b.y < 0.0))
-            return Shape::Degenerate;
-        const bool counted = i >= count;
-        if (std::abs(a.x) > 1e-9)
-        {
-            xSignChanges += counted && lastX * a.x < 0.0;
-            lastX = a.x;
-        }
-        if (std::abs(a.y) > 1e-9)
-        {
-            ySignChanges += counted && lastY * a.y < 0.0;
-            lastY = a.y;
-        }
-    }
-    if (xSignChanges > 2 || ySignChanges > 2)
-        return Shape::Degenerate;
-    setup.edgeCount = count;
-
-    setup.inverse = plane.inverse;
-    setup.da = plane.a;
-    setup.db = plane.b;
-    const double cornerSpread = (std::abs(plane.a) + std::abs(plane.b)) * h;
-    setup.dc = plane.inverse ? plane.c - cornerSpread : plane.c + cornerSpread;
-    setup.depthSlope = float(plane.a);
-    setup.depthSlopeReach = float(Lanes) * std::abs(setup.depthSlope);
-    // Covers the double evaluation's own rounding (terms up to the largest coordinates reached).
-    const double reachX = std::max(std::abs(minX), std::abs(maxX)) + 1.0 + shrink;
-    const double reachY = std::max(std::abs(minY), std::abs(maxY)) + 1.0 + shrink;
-    const double extent = std::max(reachX, double(mask.width())) * std::abs(plane.a) +
-                          std::max(reachY, double(mask.height())) * std::abs(plane.b) + std::abs(plane.c) +
-                          cornerSpread;
-    setup.depthAbsMargin = float(extent * 1e-12);
-    return Shape::Convex;
-}
 
 // One block of 4 pixels of a row, for one polygon: f0 per edge and v0 are the lane-0 values.
 struct BlockInput
@@ -217,13 +66,14 @@ void scalarBlock(const BlockInput& in, BlockResult& out)
         }
     }
     out = BlockResult{};
+    const float depthSlopeReach = float(Lanes) * std::fabs(s.depthSlope);
     for (int j = 0; j < Lanes; ++j)
     {
         out.touched |= int(touched[j]) << j;
         out.outside |= int(outside[j]) << j;
         out.ambiguous |= int(ambiguous[j]) << j;
         const float value = in.v0 + s.depthSlope * float(j);
-        const float margin = (std::fabs(value) + s.depthSlopeReach) * DepthRelativeMargin + s.depthAbsMargin;
+        const float margin = (std::fabs(value) + depthSlopeReach) * DepthRelativeMargin + s.depthAbsMargin;
         if (s.inverse)
         {
             const float w = value - margin;
@@ -256,8 +106,9 @@ void simdBlock(const BlockInput& in, BlockResult& out)
     out.touched = _mm_movemask_ps(touched);
     out.outside = _mm_movemask_ps(outside);
     out.ambiguous = _mm_movemask_ps(ambiguous);
+    const float depthSlopeReach = float(Lanes) * std::fabs(s.depthSlope);
     const __m128 value = _mm_add_ps(_mm_set1_ps(in.v0), _mm_mul_ps(_mm_set1_ps(s.depthSlope), lanes));
-    const __m128 margin = _mm_add_ps(_mm_mul_ps(_mm_add_ps(_mm_andnot_ps(sign, value), _mm_set1_ps(s.depthSlopeReach)),
+    const __m128 margin = _mm_add_ps(_mm_mul_ps(_mm_add_ps(_mm_andnot_ps(sign, value), _mm_set1_ps(depthSlopeReach)),
                                                 _mm_set1_ps(DepthRelativeMargin)),
                                      _mm_set1_ps(s.depthAbsMargin));
     __m128 depth;
@@ -345,14 +196,8 @@ void rasterizePolygon(const PolygonSetup& s, bool simd, GroupBuffers& buffers)
                 {
                     if (!(ambiguous >> j & 1))
                         continue;
-                    const double cx = x + j + 0.5;
-                    bool laneTouched = true, laneOutside = false;
-                    for (std::size_t e = 0; e < s.edgeCount; ++e)
-                    {
-                        const double f = s.nx[e] * cx + s.ny[e] * cy + s.offset[e];
-                        laneTouched = laneTouched && f >= -s.reach[e];
-                        laneOutside = laneOutside || (s.outline[e] && f < s.reach[e]);
-                    }
+                    bool laneTouched = false, laneOutside = false;
+                    decidePixel(s, x + j, y, laneTouched, laneOutside);
                     touched = (touched & ~(1 << j)) | int(laneTouched) << j;
                     outside = (outside & ~(1 << j)) | int(laneOutside) << j;
                 }
@@ -372,19 +217,6 @@ void rasterizePolygon(const PolygonSetup& s, bool simd, GroupBuffers& buffers)
 }
 } // namespace
 
-double DepthPlane::maxOverSquare(double x0, double y0, double x1, double y1) const
-{
-    const double corners[4] = {a * x0 + b * y0 + c, a * x1 + b * y0 + c, a * x0 + b * y1 + c, a * x1 + b * y1 + c};
-    const double infinity = std::numeric_limits<double>::infinity();
-    if (inverse)
-    {
-        const double smallest = *std::min_element(corners, corners + 4);
-        return smallest > 0.0 ? 1.0 / smallest : infinity; // NaN: +inf too
-    }
-    const double largest = *std::max_element(corners, corners + 4);
-    return std::isnan(largest) ? infinity : largest;
-}
-
 bool maskRasterHasSimd()
 {
 #ifdef __SSE2__
@@ -394,7 +226,7 @@ bool maskRasterHasSimd()
 #endif
 }
 
-std::size_t rasterizeOccluderGroupWith(MaskRasterPath path, OcclusionMask& mask, const ScreenPolygon* polygons,
+std::size_t rasterizeOccluderGroupReference(MaskRasterPath path, OcclusionMask& mask, const ScreenPolygon* polygons,
                                        std::size_t count, double shrink, MaskRasterScratch& scratch)
 {
     if (count == 0 || mask.width() == 0 || mask.height() == 0 || !std::isfinite(shrink))
@@ -454,9 +286,4 @@ std::size_t rasterizeOccluderGroupWith(MaskRasterPath path, OcclusionMask& mask,
     return covered;
 }
 
-std::size_t rasterizeOccluderGroup(OcclusionMask& mask, const ScreenPolygon* polygons, std::size_t count, double shrink,
-                                   MaskRasterScratch& scratch)
-{
-    return rasterizeOccluderGroupWith(MaskRasterPath::Simd, mask, polygons, count, shrink, scratch);
-}
 } // namespace osgVis::core

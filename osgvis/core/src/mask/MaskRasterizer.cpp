@@ -1,0 +1,285 @@
+// SPDX-License-Identifier: MIT
+// The tile rasterizer of occluder groups into the occlusion mask: the conservative "fully covered
+// pixels only" contract of Wang, Agarwal & Har-Peled's mask (MaskRasterizer.h), organised like the
+// fast software occlusion rasterizers (Hasselgren, Andersson & Akenine-Möller, "Masked Software
+// Occlusion Culling", HPG 2016): 8 × 8-pixel tiles classified against each edge at their corners
+// as inside, outside or partial, coverage as 64-bit lane masks, a per-tile depth bound that rejects
+// a group where the mask is already covered no farther than anything the group could write, and
+// AVX2 or SSE2 kernels for the pixels of partial tiles and for depths (MaskTileKernels.h). Unlike
+// theirs it samples no pixel centres: every decision is the reference's grown-square test, and
+// lanes near a threshold are decided in double exactly as the reference decides them. Why each
+// shortcut can only keep or lose coverage and only raise depths: docs/mask.md, "The tile
+// rasterizer".
+#include "MaskRasterPaths.h"
+#include "MaskTileKernels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace osgVis::core
+{
+struct MaskRasterScratch::Tiles
+{
+    std::vector<maskraster::PolygonSetup> setups;
+    std::vector<maskraster::Shape> shapes;
+};
+
+MaskRasterScratch::MaskRasterScratch() = default;
+MaskRasterScratch::~MaskRasterScratch() = default;
+MaskRasterScratch::MaskRasterScratch(const MaskRasterScratch&) {}
+MaskRasterScratch& MaskRasterScratch::operator=(const MaskRasterScratch&)
+{
+    return *this;
+}
+MaskRasterScratch::MaskRasterScratch(MaskRasterScratch&&) noexcept = default;
+MaskRasterScratch& MaskRasterScratch::operator=(MaskRasterScratch&&) noexcept = default;
+
+namespace
+{
+using namespace maskraster;
+
+// Tile classification is done in double, against thresholds moved by this much (px) towards the
+// undecided side: far above the double rounding of an edge function, so a decided edge is decided
+// as the reference decides each of the tile's pixels.
+constexpr double ClassifyMargin = 1e-6;
+
+std::uint64_t rectBits(int x0, int x1, int y0, int y1) // tile-relative, inclusive
+{
+    const std::uint64_t row = ((std::uint64_t(1) << (x1 + 1)) - 1) & ~((std::uint64_t(1) << x0) - 1);
+    std::uint64_t bits = 0;
+    for (int r = y0; r <= y1; ++r)
+        bits |= row << (TileSize * r);
+    return bits;
+}
+
+PixelRange intersect(const PixelRange& a, const PixelRange& b)
+{
+    return PixelRange{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
+// The smallest depth the polygon's plane has over the grown squares of the pixels in `r`, rounded
+// towards the viewer: no depth the polygon writes there (each ≥ the plane's largest over one grown
+// square) is smaller.
+float smallestDepth(const PolygonSetup& s, const PixelRange& r, double shrink)
+{
+    const DepthPlane& p = s.plane;
+    const double x0 = r.x0 - shrink, x1 = r.x1 + 1 + shrink, y0 = r.y0 - shrink, y1 = r.y1 + 1 + shrink;
+    const double ax = std::max(p.a * x0, p.a * x1), ay = std::max(p.b * y0, p.b * y1);
+    const double slack = double(s.depthAbsMargin) + 1e-9 * (std::abs(p.a * x0) + std::abs(p.a * x1) +
+                                                             std::abs(p.b * y0) + std::abs(p.b * y1) + std::abs(p.c));
+    if (p.inverse)
+    {
+        const double largestInverse = ax + ay + p.c + slack;
+        return largestInverse > 0.0 ? float(0.999999 / largestInverse) : InfiniteDepth;
+    }
+    const double least = std::min(p.a * x0, p.a * x1) + std::min(p.b * y0, p.b * y1) + p.c - slack;
+    return float(least - 1e-6 * std::abs(least));
+}
+
+struct TileWork
+{
+    std::uint64_t touched = 0, vetoed = 0;
+    bool depthStarted = false;
+    alignas(32) float depth[TileSize * TileSize];
+    TileEdges edges;
+};
+
+// One convex polygon over one tile: adds what it touches and vetoes, and its depths where it may
+// count. `tileRange` is the tile's pixels inside the mask.
+void polygonInTile(const TileKernels& kernels, const PolygonSetup& s, const PixelRange& tileRange, int tx, int ty,
+                   TileWork& work)
+{
+    const PixelRange r = intersect(tileRange, s.pixels);
+    const int ox = tx * TileSize, oy = ty * TileSize;
+    const std::uint64_t range = rectBits(r.x0 - ox, r.x1 - ox, r.y0 - oy, r.y1 - oy);
+    const double cx = r.x0 + 0.5, cy = r.y0 + 0.5, wx = r.x1 - r.x0, wy = r.y1 - r.y0;
+    const double tileCx = ox + 0.5, tileCy = oy + 0.5;
+    bool allOutside = false;
+    TileEdges& edges = work.edges;
+    edges.count = 0;
+    for (std::size_t e = 0; e < s.edgeCount; ++e)
+    {
+        // The edge function over the range's pixel centres is extreme at its corners.
+        const double f = s.nx[e] * cx + s.ny[e] * cy + s.offset[e];
+        const double low = f + std::min(0.0, s.nx[e] * wx) + std::min(0.0, s.ny[e] * wy);
+        const double high = f + std::max(0.0, s.nx[e] * wx) + std::max(0.0, s.ny[e] * wy);
+        if (high < -s.reach[e] - ClassifyMargin)
+            return; // no grown square of the range touches the polygon
+        const bool touchesAll = low >= -s.reach[e] + ClassifyMargin;
+        const bool insideAll = !s.outline[e] || low >= s.reach[e] + ClassifyMargin;
+        const bool outsideAll = s.outline[e] && high < s.reach[e] - ClassifyMargin;
+        if (touchesAll && (insideAll || outsideAll))
+        {
+            allOutside = allOutside || outsideAll;
+            continue;
+        }
+        const std::size_t k = edges.count++;
+        edges.f0[k] = float(s.nx[e] * tileCx + s.ny[e] * tileCy + s.offset[e]);
+        edges.nx[k] = s.slope[e];
+        edges.ny[k] = s.slopeY[e];
+        edges.reach[k] = s.reachF[e];
+        edges.insideLimit[k] = s.insideLimit[e];
+    }
+    std::uint64_t touched = range, outside = allOutside ? range : 0;
+    if (edges.count != 0)
+    {
+        TileCoverage c;
+        kernels.coverage(edges, r.y0 - oy, r.y1 - oy + 1, c);
+        touched = c.touched & range;
+        outside = allOutside ? range : c.outside;
+        for (std::uint64_t pending = c.ambiguous & range; pending != 0; pending &= pending - 1)
+        {
+            const int lane = __builtin_ctzll(pending);
+            bool laneTouched = false, laneOutside = false;
+            decidePixel(s, ox + lane % TileSize, oy + lane / TileSize, laneTouched, laneOutside);
+            const std::uint64_t bit = std::uint64_t(1) << lane;
+            touched = laneTouched ? touched | bit : touched & ~bit;
+            outside = laneOutside ? outside | bit : outside & ~bit;
+        }
+    }
+    work.touched |= touched;
+    work.vetoed |= touched & outside;
+    const std::uint64_t counts = touched & ~work.vetoed;
+    if (counts == 0)
+        return;
+    if (!work.depthStarted)
+    {
+        std::fill(work.depth, work.depth + TileSize * TileSize, -InfiniteDepth);
+        work.depthStarted = true;
+    }
+    TileDepth plane;
+    plane.v0 = float(s.da * tileCx + s.db * tileCy + s.dc);
+    plane.da = s.depthSlope;
+    plane.db = s.depthSlopeY;
+    plane.spread = float(TileSize) * (std::fabs(s.depthSlope) + std::fabs(s.depthSlopeY));
+    plane.absMargin = 2.0f * s.depthAbsMargin;
+    plane.inverse = s.inverse;
+    kernels.depthMax(plane, r.y0 - oy, r.y1 - oy + 1, counts, work.depth);
+}
+
+// Writes the covered lanes of a tile into the mask and refreshes the tile's bound. Tiles that reach
+// beyond the mask go through a padded copy (-inf beyond: it never raises the bound).
+std::size_t mergeTile(const TileKernels& kernels, OcclusionMask& mask, int tx, int ty, const PixelRange& tileRange,
+                      std::uint64_t covered, const float* depth)
+{
+    const int ox = tx * TileSize, oy = ty * TileSize;
+    float* rows[TileSize];
+    alignas(32) float padded[TileSize * TileSize];
+    const bool whole = tileRange.x1 - ox == TileSize - 1 && tileRange.y1 - oy == TileSize - 1;
+    const int width = tileRange.x1 - ox + 1, height = tileRange.y1 - oy + 1;
+    for (int r = 0; r < TileSize; ++r)
+    {
+        if (whole)
+        {
+            rows[r] = mask.nearerRow(std::uint32_t(oy + r)) + ox;
+            continue;
+        }
+        rows[r] = padded + TileSize * r;
+        std::fill(rows[r], rows[r] + TileSize, -InfiniteDepth);
+        if (r < height)
+            std::copy_n(mask.nearerRow(std::uint32_t(oy + r)) + ox, width, rows[r]);
+    }
+    std::size_t count = 0;
+    const float largest = kernels.merge(rows, covered, depth, count);
+    if (!whole)
+        for (int r = 0; r < height; ++r)
+            std::copy_n(rows[r], width, mask.nearerRow(std::uint32_t(oy + r)) + ox);
+    mask.setTileBound(std::uint32_t(tx), std::uint32_t(ty), largest);
+    return count;
+}
+
+const TileKernels& kernelsFor(MaskTileKernel kernel)
+{
+    const TileKernels* avx2 = kernel == MaskTileKernel::Avx2 && maskTileKernelAvailable(kernel) ? avx2TileKernels() : nullptr;
+    return avx2 ? *avx2 : sse2TileKernels();
+}
+} // namespace
+
+bool maskTileKernelAvailable(MaskTileKernel kernel)
+{
+    if (kernel == MaskTileKernel::Sse2)
+        return true;
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    static const bool avx2 = avx2TileKernels() != nullptr && __builtin_cpu_supports("avx2");
+    return avx2;
+#else
+    return false;
+#endif
+}
+
+std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& mask, const ScreenPolygon* polygons,
+                                        std::size_t count, double shrink, MaskRasterScratch& scratch)
+{
+    if (count == 0 || mask.width() == 0 || mask.height() == 0 || !std::isfinite(shrink))
+        return 0;
+    shrink = std::max(shrink, 0.0); // a negative shrink would grow the union: never conservative
+    if (!scratch.tiles)
+        scratch.tiles = std::make_unique<MaskRasterScratch::Tiles>();
+    std::vector<PolygonSetup>& setups = scratch.tiles->setups;
+    std::vector<Shape>& shapes = scratch.tiles->shapes;
+    if (setups.size() < count)
+        setups.resize(count);
+    shapes.resize(count);
+
+    PixelRange region{int(mask.width()), int(mask.height()), -1, -1};
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        shapes[i] = setupPolygon(polygons[i], shrink, mask, setups[i]);
+        if (shapes[i] == Shape::NonFinite)
+            return 0; // any non-finite polygon spoils the group
+        const PixelRange& p = setups[i].pixels;
+        if (p.empty())
+            continue;
+        region = PixelRange{std::min(region.x0, p.x0), std::min(region.y0, p.y0), std::max(region.x1, p.x1),
+                            std::max(region.y1, p.y1)};
+    }
+    if (region.empty())
+        return 0;
+
+    const TileKernels& kernels = kernelsFor(kernel);
+    const PixelRange maskRange{0, 0, int(mask.width()) - 1, int(mask.height()) - 1};
+    TileWork work;
+    std::size_t covered = 0;
+    for (int ty = region.y0 / TileSize; ty <= region.y1 / TileSize; ++ty)
+        for (int tx = region.x0 / TileSize; tx <= region.x1 / TileSize; ++tx)
+        {
+            const PixelRange tile = intersect(
+                maskRange, PixelRange{tx * TileSize, ty * TileSize, tx * TileSize + TileSize - 1, ty * TileSize + TileSize - 1});
+            // Every depth the group could write here is at least `nearest`; where the mask holds
+            // nothing farther, nothing would change (min keeps the stored depth).
+            float nearest = InfiniteDepth;
+            for (std::size_t i = 0; i < count; ++i)
+            {
+                const PixelRange r = intersect(tile, setups[i].pixels);
+                if (shapes[i] == Shape::Convex && !r.empty())
+                    nearest = std::min(nearest, smallestDepth(setups[i], r, shrink));
+            }
+            if (!(nearest < mask.tileBound(std::uint32_t(tx), std::uint32_t(ty))))
+                continue;
+            work.touched = work.vetoed = 0;
+            work.depthStarted = false;
+            for (std::size_t i = 0; i < count; ++i)
+            {
+                const PixelRange r = intersect(tile, setups[i].pixels);
+                if (r.empty())
+                    continue;
+                if (shapes[i] == Shape::Convex)
+                    polygonInTile(kernels, setups[i], tile, tx, ty, work);
+                else // degenerate: vetoes what it touches
+                    work.vetoed |= rectBits(r.x0 - tx * TileSize, r.x1 - tx * TileSize, r.y0 - ty * TileSize,
+                                            r.y1 - ty * TileSize);
+            }
+            const std::uint64_t lanes = work.touched & ~work.vetoed;
+            if (lanes != 0)
+                covered += mergeTile(kernels, mask, tx, ty, tile, lanes, work.depth);
+        }
+    return covered;
+}
+
+std::size_t rasterizeOccluderGroup(OcclusionMask& mask, const ScreenPolygon* polygons, std::size_t count, double shrink,
+                                   MaskRasterScratch& scratch)
+{
+    return rasterizeOccluderGroupTiled(MaskTileKernel::Avx2, mask, polygons, count, shrink, scratch);
+}
+} // namespace osgVis::core
