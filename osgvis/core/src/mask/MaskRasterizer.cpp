@@ -23,6 +23,8 @@ struct MaskRasterScratch::Tiles
 {
     std::vector<maskraster::PolygonSetup> setups;
     std::vector<maskraster::Shape> shapes;
+    std::vector<float> nearest;
+    std::vector<int> spans;
 };
 
 MaskRasterScratch::MaskRasterScratch() = default;
@@ -75,6 +77,33 @@ float smallestDepth(const PolygonSetup& s, const PixelRange& r, double shrink)
     }
     const double least = std::min(p.a * x0, p.a * x1) + std::min(p.b * y0, p.b * y1) + p.c - slack;
     return float(least - 1e-6 * std::abs(least));
+}
+
+// Tile columns of tile row `ty` where the polygon may touch a grown pixel square: its pixel range,
+// narrowed by each edge's touch condition f ≥ -reach over the row band's pixel centres, with a
+// pixel of slack on either side (the kernels still test every pixel they are given).
+bool tileSpan(const PolygonSetup& s, int ty, int& first, int& last)
+{
+    const int y0 = std::max(s.pixels.y0, ty * TileSize), y1 = std::min(s.pixels.y1, ty * TileSize + TileSize - 1);
+    if (y0 > y1 || s.pixels.x0 > s.pixels.x1)
+        return false;
+    double low = s.pixels.x0, high = s.pixels.x1;
+    for (std::size_t e = 0; e < s.edgeCount; ++e)
+    {
+        if (std::abs(s.nx[e]) < 1e-6)
+            continue;
+        const double nyCy = std::max(s.ny[e] * (y0 + 0.5), s.ny[e] * (y1 + 0.5));
+        const double x = (-s.reach[e] - nyCy - s.offset[e]) / s.nx[e] - 0.5; // pixel x at the boundary
+        if (s.nx[e] > 0.0)
+            low = std::max(low, std::floor(x) - 1.0);
+        else
+            high = std::min(high, std::ceil(x) + 1.0);
+    }
+    if (!(low <= high))
+        return false;
+    first = int(low) / TileSize;
+    last = int(high) / TileSize;
+    return true;
 }
 
 struct TileWork
@@ -238,29 +267,71 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
         return 0;
 
     const TileKernels& kernels = kernelsFor(kernel);
+    // Every depth a polygon writes is at least its smallest depth over its pixel range; where the
+    // mask already holds nothing farther, nothing would change (min keeps the stored depth).
+    std::vector<float>& nearest = scratch.tiles->nearest;
+    nearest.assign(count, InfiniteDepth);
+    float groupNearest = InfiniteDepth;
+    for (std::size_t i = 0; i < count; ++i)
+        if (shapes[i] == Shape::Convex && !setups[i].pixels.empty())
+        {
+            nearest[i] = smallestDepth(setups[i], setups[i].pixels, shrink);
+            groupNearest = std::min(groupNearest, nearest[i]);
+        }
+    std::vector<int>& spans = scratch.tiles->spans; // per polygon: first and last tile column of the row
+    spans.resize(2 * count);
     const PixelRange maskRange{0, 0, int(mask.width()) - 1, int(mask.height()) - 1};
     TileWork work;
     std::size_t covered = 0;
     for (int ty = region.y0 / TileSize; ty <= region.y1 / TileSize; ++ty)
-        for (int tx = region.x0 / TileSize; tx <= region.x1 / TileSize; ++tx)
+    {
+        int rowFirst = std::numeric_limits<int>::max(), rowLast = -1;
+        for (std::size_t i = 0; i < count; ++i)
         {
+            int& first = spans[2 * i];
+            int& last = spans[2 * i + 1];
+            const PixelRange& p = setups[i].pixels;
+            if (shapes[i] == Shape::Convex ? !tileSpan(setups[i], ty, first, last)
+                                           : p.empty() || p.y1 < ty * TileSize || p.y0 >= (ty + 1) * TileSize)
+            {
+                first = 0;
+                last = -1;
+                continue;
+            }
+            if (shapes[i] != Shape::Convex)
+            {
+                first = p.x0 / TileSize;
+                last = p.x1 / TileSize;
+            }
+            else
+            {
+                rowFirst = std::min(rowFirst, first);
+                rowLast = std::max(rowLast, last);
+            }
+        }
+        for (int tx = rowFirst; tx <= rowLast; ++tx)
+        {
+            const float bound = mask.tileBound(std::uint32_t(tx), std::uint32_t(ty));
+            if (!(groupNearest < bound))
+                continue;
             const PixelRange tile = intersect(
                 maskRange, PixelRange{tx * TileSize, ty * TileSize, tx * TileSize + TileSize - 1, ty * TileSize + TileSize - 1});
-            // Every depth the group could write here is at least `nearest`; where the mask holds
-            // nothing farther, nothing would change (min keeps the stored depth).
-            float nearest = InfiniteDepth;
-            for (std::size_t i = 0; i < count; ++i)
+            if (count > 1)
             {
-                const PixelRange r = intersect(tile, setups[i].pixels);
-                if (shapes[i] == Shape::Convex && !r.empty())
-                    nearest = std::min(nearest, smallestDepth(setups[i], r, shrink));
+                // The tighter test over the tile alone, for groups whose polygons lie at different depths.
+                float tileNearest = InfiniteDepth;
+                for (std::size_t i = 0; i < count; ++i)
+                    if (shapes[i] == Shape::Convex && spans[2 * i] <= tx && tx <= spans[2 * i + 1])
+                        tileNearest = std::min(tileNearest, nearest[i]);
+                if (!(tileNearest < bound))
+                    continue;
             }
-            if (!(nearest < mask.tileBound(std::uint32_t(tx), std::uint32_t(ty))))
-                continue;
             work.touched = work.vetoed = 0;
             work.depthStarted = false;
             for (std::size_t i = 0; i < count; ++i)
             {
+                if (tx < spans[2 * i] || tx > spans[2 * i + 1])
+                    continue;
                 const PixelRange r = intersect(tile, setups[i].pixels);
                 if (r.empty())
                     continue;
@@ -274,6 +345,7 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
             if (lanes != 0)
                 covered += mergeTile(kernels, mask, tx, ty, tile, lanes, work.depth);
         }
+    }
     return covered;
 }
 

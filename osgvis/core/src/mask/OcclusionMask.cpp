@@ -7,6 +7,10 @@
 #include <cmath>
 #include <limits>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 namespace osgVis::core
 {
 namespace
@@ -57,22 +61,33 @@ void windowMax(const float* in, float* out, std::size_t count, std::size_t itemS
     }
     std::fill(out + (count - radius) * itemSize, out + count * itemSize, Uncovered);
 }
+
+// out[x] = max(row0[2x], row0[2x+1], row1[2x], row1[2x+1]) for x < count: the 2 × 2 max of a
+// pyramid level where all four children exist.
+void halveRows(const float* row0, const float* row1, float* out, std::uint32_t count)
+{
+    std::uint32_t x = 0;
+#ifdef __SSE2__
+    for (; x + 4 <= count; x += 4)
+    {
+        const __m128 a = _mm_max_ps(_mm_loadu_ps(row0 + 2 * x), _mm_loadu_ps(row1 + 2 * x));
+        const __m128 b = _mm_max_ps(_mm_loadu_ps(row0 + 2 * x + 4), _mm_loadu_ps(row1 + 2 * x + 4));
+        _mm_storeu_ps(out + x, _mm_max_ps(_mm_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 2, 0)),
+                                          _mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1))));
+    }
+#endif
+    for (; x < count; ++x)
+        out[x] = std::max(std::max(row0[2 * x], row0[2 * x + 1]), std::max(row1[2 * x], row1[2 * x + 1]));
+}
 } // namespace
 
 void OcclusionMask::reset(std::uint32_t width, std::uint32_t height)
 {
+    dropPyramid();
     _width = width;
     _height = height;
     _base.assign(std::size_t(width) * height, Uncovered);
     _tileBound.assign(std::size_t(tileColumns()) * tileRows(), Uncovered);
-    dropPyramid();
-}
-
-float* OcclusionMask::nearerRow(std::uint32_t y)
-{
-    if (!_levels.empty())
-        dropPyramid();
-    return _base.data() + std::size_t(y) * _width;
 }
 
 void OcclusionMask::recomputeTileBounds()
@@ -90,6 +105,8 @@ void OcclusionMask::recomputeTileBounds()
 
 void OcclusionMask::dropPyramid()
 {
+    if (!_levels.empty())
+        std::swap(_base, _levels[0]); // level 0 holds the mask while the pyramid stands
     for (std::vector<float>& level : _levels)
         _spareLevels.push_back(std::move(level));
     _levels.clear();
@@ -108,7 +125,8 @@ void OcclusionMask::cover(std::uint32_t x, std::uint32_t y, float depth)
 
 std::size_t OcclusionMask::coveredPixels() const
 {
-    return std::size_t(std::count_if(_base.begin(), _base.end(), [](float depth) { return depth < Uncovered; }));
+    const std::vector<float>& base = levelZero();
+    return std::size_t(std::count_if(base.begin(), base.end(), [](float depth) { return depth < Uncovered; }));
 }
 
 void OcclusionMask::shrinkUnion(std::uint32_t pixels)
@@ -149,8 +167,7 @@ void OcclusionMask::buildPyramid()
         _levels.back().resize(std::size_t(width) * height);
         return _levels.back();
     };
-    std::vector<float>& base = newLevel(_width, _height);
-    std::copy(_base.begin(), _base.end(), base.begin());
+    std::swap(newLevel(_width, _height), _base); // no copy: level 0 is the mask itself
     if (_width == 0 || _height == 0)
         return;
     while (_levelWidth.back() > 1 || _levelHeight.back() > 1)
@@ -161,19 +178,17 @@ void OcclusionMask::buildPyramid()
         const std::vector<float>& fine = _levels[_levels.size() - 2]; // valid: newLevel is done growing _levels
         for (std::uint32_t y = 0; y < height; ++y)
         {
-            const float* row0 = fine.data() + std::size_t(2 * y) * fineWidth;
-            // A missing child (odd size) is uncovered, so the texel is too.
-            const bool hasRow1 = 2 * y + 1 < fineHeight;
-            const float* row1 = hasRow1 ? row0 + fineWidth : nullptr;
             float* out = coarse.data() + std::size_t(y) * width;
-            for (std::uint32_t x = 0; x < width; ++x)
+            // A missing child (odd size) is uncovered, so the texel is too.
+            if (2 * y + 1 >= fineHeight)
             {
-                const std::uint32_t x0 = 2 * x, x1 = 2 * x + 1;
-                const bool hasColumn1 = x1 < fineWidth;
-                float value = hasColumn1 ? std::max(row0[x0], row0[x1]) : Uncovered;
-                value = hasRow1 ? std::max(value, hasColumn1 ? std::max(row1[x0], row1[x1]) : Uncovered) : Uncovered;
-                out[x] = value;
+                std::fill(out, out + width, Uncovered);
+                continue;
             }
+            const float* row0 = fine.data() + std::size_t(2 * y) * fineWidth;
+            halveRows(row0, row0 + fineWidth, out, fineWidth / 2);
+            if (fineWidth % 2 != 0)
+                out[width - 1] = Uncovered;
         }
     }
 }

@@ -23,8 +23,8 @@ public:
     std::uint32_t height() const { return _height; }
 
     /// Level 0, row-major from the bottom row. +infinity = not covered.
-    float depth(std::uint32_t x, std::uint32_t y) const { return _levels.empty() ? _base[y * _width + x] : _levels[0][y * _width + x]; }
-    const float* baseRow(std::uint32_t y) const { return _base.data() + std::size_t(y) * _width; }
+    float depth(std::uint32_t x, std::uint32_t y) const { return levelZero()[std::size_t(y) * _width + x]; }
+    const float* baseRow(std::uint32_t y) const { return levelZero().data() + std::size_t(y) * _width; }
     /// Keeps the nearer of the stored and the given depth (a pixel fully covered by several occluders
     /// is hidden behind the nearest of them). Drops the pyramid. A NaN depth covers nothing.
     void cover(std::uint32_t x, std::uint32_t y, float depth);
@@ -41,7 +41,12 @@ public:
     /// For a rasterizer that writes a tile at a time: row y of level 0, to be written with nearer
     /// depths only (a bound must stay an upper bound), then setTileBound() with the tile's new largest
     /// depth over its pixels inside the mask. Drops the pyramid.
-    float* nearerRow(std::uint32_t y);
+    float* nearerRow(std::uint32_t y)
+    {
+        if (!_levels.empty())
+            dropPyramid();
+        return _base.data() + std::size_t(y) * _width;
+    }
     void setTileBound(std::uint32_t tx, std::uint32_t ty, float largestDepth)
     {
         _tileBound[std::size_t(ty) * tileColumns() + tx] = largestDepth;
@@ -71,6 +76,8 @@ public:
 
 private:
     void dropPyramid();
+    /// The mask: _base, or _levels[0] while the pyramid stands (moved there, not copied).
+    const std::vector<float>& levelZero() const { return _levels.empty() ? _base : _levels[0]; }
     void recomputeTileBounds();
     bool texelHidden(std::size_t level, std::uint32_t tx, std::uint32_t ty, const std::uint32_t pixels[4],
                      float nearestDepth) const;
@@ -78,7 +85,7 @@ private:
     std::uint32_t _width = 0, _height = 0;
     std::vector<float> _base;
     std::vector<float> _tileBound; ///< per tile, row-major; cover() only lowers depths, so it keeps them
-    std::vector<std::vector<float>> _levels; ///< _levels[0] == _base once built
+    std::vector<std::vector<float>> _levels; ///< _levels[0] is the mask (moved out of _base) once built
     std::vector<std::uint32_t> _levelWidth, _levelHeight;
     std::vector<std::vector<float>> _spareLevels; ///< dropped levels keep their memory for the next build
     std::vector<float> _erosionScratch;
