@@ -48,11 +48,9 @@ constexpr double ClassifyMargin = 1e-6;
 
 std::uint64_t rectBits(int x0, int x1, int y0, int y1) // tile-relative, inclusive
 {
-    const std::uint64_t row = ((std::uint64_t(1) << (x1 + 1)) - 1) & ~((std::uint64_t(1) << x0) - 1);
-    std::uint64_t bits = 0;
-    for (int r = y0; r <= y1; ++r)
-        bits |= row << (TileSize * r);
-    return bits;
+    const std::uint64_t row = (0xffu >> (TileSize - 1 - x1)) & (0xffu << x0);
+    const std::uint64_t rows = (~std::uint64_t(0) >> (TileSize * (TileSize - 1 - y1))) & (~std::uint64_t(0) << (TileSize * y0));
+    return row * 0x0101010101010101ull & rows;
 }
 
 PixelRange intersect(const PixelRange& a, const PixelRange& b)
@@ -106,10 +104,14 @@ bool tileSpan(const PolygonSetup& s, int ty, int& first, int& last)
     return true;
 }
 
+// What a group has put into one tile so far. While one polygon alone gives depths, its plane is
+// kept instead of depths (merged on the way into the mask); a second one fills `depth`.
 struct TileWork
 {
     std::uint64_t touched = 0, vetoed = 0;
-    bool depthStarted = false;
+    int contributors = 0;
+    TileDepth first;
+    std::uint64_t firstLanes = 0;
     alignas(32) float depth[TileSize * TileSize];
     TileEdges edges;
 };
@@ -172,11 +174,6 @@ void polygonInTile(const TileKernels& kernels, const PolygonSetup& s, const Pixe
     const std::uint64_t counts = touched & ~work.vetoed;
     if (counts == 0)
         return;
-    if (!work.depthStarted)
-    {
-        std::fill(work.depth, work.depth + TileSize * TileSize, -InfiniteDepth);
-        work.depthStarted = true;
-    }
     TileDepth plane;
     plane.v0 = float(s.da * tileCx + s.db * tileCy + s.dc);
     plane.da = s.depthSlope;
@@ -184,13 +181,24 @@ void polygonInTile(const TileKernels& kernels, const PolygonSetup& s, const Pixe
     plane.spread = float(TileSize) * (std::fabs(s.depthSlope) + std::fabs(s.depthSlopeY));
     plane.absMargin = 2.0f * s.depthAbsMargin;
     plane.inverse = s.inverse;
+    if (work.contributors++ == 0)
+    {
+        work.first = plane;
+        work.firstLanes = counts;
+        return;
+    }
+    if (work.contributors == 2)
+    {
+        std::fill(work.depth, work.depth + TileSize * TileSize, -InfiniteDepth);
+        kernels.depthMax(work.first, 0, TileSize, work.firstLanes, work.depth);
+    }
     kernels.depthMax(plane, r.y0 - oy, r.y1 - oy + 1, counts, work.depth);
 }
 
 // Writes the covered lanes of a tile into the mask and refreshes the tile's bound. Tiles that reach
 // beyond the mask go through a padded copy (-inf beyond: it never raises the bound).
 std::size_t mergeTile(const TileKernels& kernels, OcclusionMask& mask, int tx, int ty, const PixelRange& tileRange,
-                      std::uint64_t covered, const float* depth)
+                      std::uint64_t covered, const TileWork& work)
 {
     const int ox = tx * TileSize, oy = ty * TileSize;
     float* rows[TileSize];
@@ -210,7 +218,10 @@ std::size_t mergeTile(const TileKernels& kernels, OcclusionMask& mask, int tx, i
             std::copy_n(mask.nearerRow(std::uint32_t(oy + r)) + ox, width, rows[r]);
     }
     std::size_t count = 0;
-    const float largest = kernels.merge(rows, covered, depth, count);
+    // note: with one contributor every covered lane is one of its lanes (a covered pixel's touching
+    // polygons all gave depths there), so its plane stands for the maximum.
+    const float largest = work.contributors == 1 ? kernels.planeMerge(rows, covered, work.first, count)
+                                                 : kernels.merge(rows, covered, work.depth, count);
     if (!whole)
         for (int r = 0; r < height; ++r)
             std::copy_n(rows[r], width, mask.nearerRow(std::uint32_t(oy + r)) + ox);
@@ -278,6 +289,14 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
             nearest[i] = smallestDepth(setups[i], setups[i].pixels, shrink);
             groupNearest = std::min(groupNearest, nearest[i]);
         }
+    // The whole group at once, by blocks of tiles (front-to-back occluders behind the mask so far).
+    const int blocks = int(TileSize * OcclusionMask::BlockTiles);
+    float regionBound = -InfiniteDepth;
+    for (int by = region.y0 / blocks; by <= region.y1 / blocks && !(groupNearest < regionBound); ++by)
+        for (int bx = region.x0 / blocks; bx <= region.x1 / blocks; ++bx)
+            regionBound = std::max(regionBound, mask.blockBound(std::uint32_t(bx), std::uint32_t(by)));
+    if (!(groupNearest < regionBound))
+        return 0;
     std::vector<int>& spans = scratch.tiles->spans; // per polygon: first and last tile column of the row
     spans.resize(2 * count);
     const PixelRange maskRange{0, 0, int(mask.width()) - 1, int(mask.height()) - 1};
@@ -311,6 +330,13 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
         }
         for (int tx = rowFirst; tx <= rowLast; ++tx)
         {
+            const int blockTiles = int(OcclusionMask::BlockTiles);
+            if ((tx == rowFirst || tx % blockTiles == 0) &&
+                !(groupNearest < mask.blockBound(std::uint32_t(tx / blockTiles), std::uint32_t(ty / blockTiles))))
+            {
+                tx = (tx / blockTiles + 1) * blockTiles - 1; // the rest of the block
+                continue;
+            }
             const float bound = mask.tileBound(std::uint32_t(tx), std::uint32_t(ty));
             if (!(groupNearest < bound))
                 continue;
@@ -327,7 +353,7 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
                     continue;
             }
             work.touched = work.vetoed = 0;
-            work.depthStarted = false;
+            work.contributors = 0;
             for (std::size_t i = 0; i < count; ++i)
             {
                 if (tx < spans[2 * i] || tx > spans[2 * i + 1])
@@ -343,7 +369,7 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
             }
             const std::uint64_t lanes = work.touched & ~work.vetoed;
             if (lanes != 0)
-                covered += mergeTile(kernels, mask, tx, ty, tile, lanes, work.depth);
+                covered += mergeTile(kernels, mask, tx, ty, tile, lanes, work);
         }
     }
     return covered;

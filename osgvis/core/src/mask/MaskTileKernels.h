@@ -45,6 +45,8 @@ struct TileKernels
     // rows[r][j] = min(rows[r][j], depth[8r + j]) where the lane bit is set; returns the largest value
     // of the 64 after the merge and adds the number of lanes set with a finite depth to `covered`.
     float (*merge)(float* const rows[TileSize], std::uint64_t lanes, const float* depth, std::size_t& covered);
+    // The same with one polygon's depths computed on the way (a tile only one polygon writes).
+    float (*planeMerge)(float* const rows[TileSize], std::uint64_t lanes, const TileDepth& plane, std::size_t& covered);
 };
 
 // The relative depth margin of the tile kernels: it exceeds the float evaluation error of both the

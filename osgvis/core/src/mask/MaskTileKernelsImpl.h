@@ -40,55 +40,63 @@ void tileCoverage(const TileEdges& edges, int rowBegin, int rowEnd, TileCoverage
     }
 }
 
+// Row r of a polygon's depths over the tile.
+inline Row planeDepthRow(const TileDepth& plane, int r)
+{
+    const Row start = add(Row::splat(plane.v0), mul(Row::splat(plane.db), Row::splat(float(r))));
+    const Row v = add(start, mul(Row::splat(plane.da), laneIndex()));
+    const Row margin =
+        add(mul(add(absolute(v), Row::splat(plane.spread)), Row::splat(TileDepthRelativeMargin)), Row::splat(plane.absMargin));
+    if (!plane.inverse)
+        return add(v, margin);
+    const Row w = sub(v, margin);
+    return select(greater(w, Row::zero()), div(Row::splat(1.0f), w), Row::splat(InfiniteDepth));
+}
+
 void tileDepthMax(const TileDepth& plane, int rowBegin, int rowEnd, std::uint64_t lanes, float* depth)
 {
-    const Row index = laneIndex();
-    const Row spread = Row::splat(plane.spread), rel = Row::splat(TileDepthRelativeMargin);
-    const Row absMargin = Row::splat(plane.absMargin), infinity = Row::splat(InfiniteDepth);
     for (int r = rowBegin; r < rowEnd; ++r)
     {
         const unsigned bits = unsigned(lanes >> (TileSize * r)) & 0xffu;
         if (bits == 0)
             continue;
-        const Row start = add(Row::splat(plane.v0), mul(Row::splat(plane.db), Row::splat(float(r))));
-        const Row v = add(start, mul(Row::splat(plane.da), index));
-        const Row margin = add(mul(add(absolute(v), spread), rel), absMargin);
-        Row value;
-        if (plane.inverse)
-        {
-            const Row w = sub(v, margin);
-            const Row positive = greater(w, Row::zero());
-            value = select(positive, div(Row::splat(1.0f), w), infinity);
-        }
-        else
-            value = add(v, margin);
         float* out = depth + TileSize * r;
         const Row old = Row::load(out);
-        select(fromLaneBits(bits), max(old, value), old).store(out);
+        select(fromLaneBits(bits), max(old, planeDepthRow(plane, r)), old).store(out);
     }
+}
+
+// Keeps the nearer of row r's stored depths and `d` where `bits` says; returns the merged row.
+inline Row mergeRow(float* row, unsigned bits, Row d, std::size_t& covered)
+{
+    const Row stored = Row::load(row);
+    const Row set = fromLaneBits(bits);
+    const Row merged = select(set, min(stored, d), stored);
+    merged.store(row);
+    covered += std::size_t(__builtin_popcount(unsigned(laneBits(bitAnd(set, less(d, Row::splat(InfiniteDepth)))))));
+    return merged;
 }
 
 float tileMerge(float* const rows[TileSize], std::uint64_t lanes, const float* depth, std::size_t& covered)
 {
-    const Row infinity = Row::splat(InfiniteDepth);
     Row largest = Row::splat(-InfiniteDepth);
     for (int r = 0; r < TileSize; ++r)
     {
-        const Row stored = Row::load(rows[r]);
         const unsigned bits = unsigned(lanes >> (TileSize * r)) & 0xffu;
-        if (bits == 0)
-        {
-            largest = max(largest, stored);
-            continue;
-        }
-        const Row d = Row::load(depth + TileSize * r);
-        const Row set = fromLaneBits(bits);
-        const Row merged = select(set, min(stored, d), stored);
-        merged.store(rows[r]);
-        largest = max(largest, merged);
-        covered += std::size_t(__builtin_popcount(laneBits(bitAnd(set, less(d, infinity)))));
+        largest = max(largest, bits == 0 ? Row::load(rows[r]) : mergeRow(rows[r], bits, Row::load(depth + TileSize * r), covered));
     }
     return largestLane(largest);
 }
 
-const TileKernels Kernels{tileCoverage, tileDepthMax, tileMerge};
+float tilePlaneMerge(float* const rows[TileSize], std::uint64_t lanes, const TileDepth& plane, std::size_t& covered)
+{
+    Row largest = Row::splat(-InfiniteDepth);
+    for (int r = 0; r < TileSize; ++r)
+    {
+        const unsigned bits = unsigned(lanes >> (TileSize * r)) & 0xffu;
+        largest = max(largest, bits == 0 ? Row::load(rows[r]) : mergeRow(rows[r], bits, planeDepthRow(plane, r), covered));
+    }
+    return largestLane(largest);
+}
+
+const TileKernels Kernels{tileCoverage, tileDepthMax, tileMerge, tilePlaneMerge};

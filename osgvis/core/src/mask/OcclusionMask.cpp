@@ -88,6 +88,25 @@ void OcclusionMask::reset(std::uint32_t width, std::uint32_t height)
     _height = height;
     _base.assign(std::size_t(width) * height, Uncovered);
     _tileBound.assign(std::size_t(tileColumns()) * tileRows(), Uncovered);
+    _blockBound.assign(std::size_t(blockColumns()) * blockRows(), Uncovered);
+}
+
+void OcclusionMask::setTileBound(std::uint32_t tx, std::uint32_t ty, float largestDepth)
+{
+    _tileBound[std::size_t(ty) * tileColumns() + tx] = largestDepth;
+    recomputeBlockBound(tx / BlockTiles, ty / BlockTiles);
+}
+
+void OcclusionMask::recomputeBlockBound(std::uint32_t bx, std::uint32_t by)
+{
+    const std::uint32_t columns = tileColumns();
+    const std::uint32_t x0 = bx * BlockTiles, x1 = std::min(x0 + BlockTiles, columns);
+    const std::uint32_t y0 = by * BlockTiles, y1 = std::min(y0 + BlockTiles, tileRows());
+    float largest = -Uncovered;
+    for (std::uint32_t y = y0; y < y1; ++y)
+        for (std::uint32_t x = x0; x < x1; ++x)
+            largest = std::max(largest, _tileBound[std::size_t(y) * columns + x]);
+    _blockBound[std::size_t(by) * blockColumns() + bx] = largest;
 }
 
 void OcclusionMask::recomputeTileBounds()
@@ -101,6 +120,9 @@ void OcclusionMask::recomputeTileBounds()
         for (std::uint32_t x = 0; x < _width; ++x)
             bound[x / TileSize] = std::max(bound[x / TileSize], row[x]);
     }
+    for (std::uint32_t by = 0; by < blockRows(); ++by)
+        for (std::uint32_t bx = 0; bx < blockColumns(); ++bx)
+            recomputeBlockBound(bx, by);
 }
 
 void OcclusionMask::dropPyramid()

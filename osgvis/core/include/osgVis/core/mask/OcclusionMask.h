@@ -41,16 +41,19 @@ public:
     /// For a rasterizer that writes a tile at a time: row y of level 0, to be written with nearer
     /// depths only (a bound must stay an upper bound), then setTileBound() with the tile's new largest
     /// depth over its pixels inside the mask. Drops the pyramid.
+    /// The largest tileBound() over the BlockTiles × BlockTiles tiles of block (bx, by), for skipping
+    /// a block of tiles at once.
+    static constexpr std::uint32_t BlockTiles = 4;
+    std::uint32_t blockColumns() const { return (tileColumns() + BlockTiles - 1) / BlockTiles; }
+    std::uint32_t blockRows() const { return (tileRows() + BlockTiles - 1) / BlockTiles; }
+    float blockBound(std::uint32_t bx, std::uint32_t by) const { return _blockBound[std::size_t(by) * blockColumns() + bx]; }
     float* nearerRow(std::uint32_t y)
     {
         if (!_levels.empty())
             dropPyramid();
         return _base.data() + std::size_t(y) * _width;
     }
-    void setTileBound(std::uint32_t tx, std::uint32_t ty, float largestDepth)
-    {
-        _tileBound[std::size_t(ty) * tileColumns() + tx] = largestDepth;
-    }
+    void setTileBound(std::uint32_t tx, std::uint32_t ty, float largestDepth);
 
     /// mask-approx only: the paper's shrinking of the fused union. A pixel stays covered only when
     /// every pixel within Chebyshev distance `pixels` is covered; its depth becomes the largest
@@ -79,12 +82,14 @@ private:
     /// The mask: _base, or _levels[0] while the pyramid stands (moved there, not copied).
     const std::vector<float>& levelZero() const { return _levels.empty() ? _base : _levels[0]; }
     void recomputeTileBounds();
+    void recomputeBlockBound(std::uint32_t bx, std::uint32_t by);
     bool texelHidden(std::size_t level, std::uint32_t tx, std::uint32_t ty, const std::uint32_t pixels[4],
                      float nearestDepth) const;
 
     std::uint32_t _width = 0, _height = 0;
     std::vector<float> _base;
     std::vector<float> _tileBound; ///< per tile, row-major; cover() only lowers depths, so it keeps them
+    std::vector<float> _blockBound; ///< per block of tiles, row-major
     std::vector<std::vector<float>> _levels; ///< _levels[0] is the mask (moved out of _base) once built
     std::vector<std::uint32_t> _levelWidth, _levelHeight;
     std::vector<std::vector<float>> _spareLevels; ///< dropped levels keep their memory for the next build
