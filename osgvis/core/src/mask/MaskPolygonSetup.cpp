@@ -28,6 +28,22 @@ bool grownSpan(double lo, double hi, double shrink, std::uint32_t size, int& fir
 }
 } // namespace
 
+bool prepareGroup(std::size_t count, const OcclusionMask& mask, double& shrink)
+{
+    if (count == 0 || mask.width() == 0 || mask.height() == 0 || !std::isfinite(shrink))
+        return false;
+    shrink = std::max(shrink, 0.0);
+    return true;
+}
+
+void unite(PixelRange& region, const PixelRange& pixels)
+{
+    if (pixels.empty())
+        return;
+    region = PixelRange{std::min(region.x0, pixels.x0), std::min(region.y0, pixels.y0), std::max(region.x1, pixels.x1),
+                        std::max(region.y1, pixels.y1)};
+}
+
 Shape setupPolygon(const ScreenPolygon& polygon, double shrink, const OcclusionMask& mask, PolygonSetup& setup)
 {
     const std::vector<glm::dvec2>& v = polygon.vertices;

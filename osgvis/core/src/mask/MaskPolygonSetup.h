@@ -56,6 +56,13 @@ struct PolygonSetup
     DepthPlane plane;
 };
 
+// False when a group draws nothing (no polygons, an empty mask, a non-finite shrink); else clamps the
+// shrink at 0 (a negative shrink would grow the union: never conservative).
+bool prepareGroup(std::size_t count, const OcclusionMask& mask, double& shrink);
+
+// Grows `region` to hold `pixels` (an empty range leaves it).
+void unite(PixelRange& region, const PixelRange& pixels);
+
 // Fills `setup` (pixels even for degenerate polygons, so that they veto what they touch).
 Shape setupPolygon(const ScreenPolygon& polygon, double shrink, const OcclusionMask& mask, PolygonSetup& setup);
 

@@ -229,6 +229,15 @@ std::size_t mergeTile(const TileKernels& kernels, OcclusionMask& mask, int tx, i
     return count;
 }
 
+bool cpuHasAvx2()
+{
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
+
 const TileKernels& kernelsFor(MaskTileKernel kernel)
 {
     const TileKernels* avx2 = kernel == MaskTileKernel::Avx2 && maskTileKernelAvailable(kernel) ? avx2TileKernels() : nullptr;
@@ -238,22 +247,16 @@ const TileKernels& kernelsFor(MaskTileKernel kernel)
 
 bool maskTileKernelAvailable(MaskTileKernel kernel)
 {
-    if (kernel == MaskTileKernel::Sse2)
-        return true;
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-    static const bool avx2 = avx2TileKernels() != nullptr && __builtin_cpu_supports("avx2");
-    return avx2;
-#else
-    return false;
-#endif
+    // The AVX2 kernels exist where the compiler could build them; they run where the CPU says so.
+    static const bool avx2 = avx2TileKernels() != nullptr && cpuHasAvx2();
+    return kernel == MaskTileKernel::Sse2 || avx2;
 }
 
 std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& mask, const ScreenPolygon* polygons,
                                         std::size_t count, double shrink, MaskRasterScratch& scratch)
 {
-    if (count == 0 || mask.width() == 0 || mask.height() == 0 || !std::isfinite(shrink))
+    if (!prepareGroup(count, mask, shrink))
         return 0;
-    shrink = std::max(shrink, 0.0); // a negative shrink would grow the union: never conservative
     if (!scratch.tiles)
         scratch.tiles = std::make_unique<MaskRasterScratch::Tiles>();
     std::vector<PolygonSetup>& setups = scratch.tiles->setups;
@@ -268,11 +271,7 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
         shapes[i] = setupPolygon(polygons[i], shrink, mask, setups[i]);
         if (shapes[i] == Shape::NonFinite)
             return 0; // any non-finite polygon spoils the group
-        const PixelRange& p = setups[i].pixels;
-        if (p.empty())
-            continue;
-        region = PixelRange{std::min(region.x0, p.x0), std::min(region.y0, p.y0), std::max(region.x1, p.x1),
-                            std::max(region.y1, p.y1)};
+        unite(region, setups[i].pixels);
     }
     if (region.empty())
         return 0;

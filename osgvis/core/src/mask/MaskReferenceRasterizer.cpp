@@ -227,11 +227,10 @@ bool maskRasterHasSimd()
 }
 
 std::size_t rasterizeOccluderGroupReference(MaskRasterPath path, OcclusionMask& mask, const ScreenPolygon* polygons,
-                                       std::size_t count, double shrink, MaskRasterScratch& scratch)
+                                            std::size_t count, double shrink, MaskRasterScratch& scratch)
 {
-    if (count == 0 || mask.width() == 0 || mask.height() == 0 || !std::isfinite(shrink))
+    if (!prepareGroup(count, mask, shrink))
         return 0;
-    shrink = std::max(shrink, 0.0); // a negative shrink would grow the union: never conservative
 
     // Bounding region of the group's grown polygons; any non-finite polygon spoils the group.
     PixelRange region{int(mask.width()), int(mask.height()), -1, -1};
@@ -240,12 +239,7 @@ std::size_t rasterizeOccluderGroupReference(MaskRasterPath path, OcclusionMask& 
     {
         if (setupPolygon(polygons[i], shrink, mask, setup) == Shape::NonFinite)
             return 0;
-        if (setup.pixels.empty())
-            continue;
-        region.x0 = std::min(region.x0, setup.pixels.x0);
-        region.y0 = std::min(region.y0, setup.pixels.y0);
-        region.x1 = std::max(region.x1, setup.pixels.x1);
-        region.y1 = std::max(region.y1, setup.pixels.y1);
+        unite(region, setup.pixels);
     }
     if (region.empty())
         return 0;
