@@ -205,17 +205,19 @@ std::size_t mergeTile(const TileKernels& kernels, OcclusionMask& mask, int tx, i
     alignas(32) float padded[TileSize * TileSize];
     const bool whole = tileRange.x1 - ox == TileSize - 1 && tileRange.y1 - oy == TileSize - 1;
     const int width = tileRange.x1 - ox + 1, height = tileRange.y1 - oy + 1;
+    float* const first = mask.nearerRow(std::uint32_t(oy)) + ox; // rows are mask.width() apart
+    const std::size_t stride = mask.width();
     for (int r = 0; r < TileSize; ++r)
     {
         if (whole)
         {
-            rows[r] = mask.nearerRow(std::uint32_t(oy + r)) + ox;
+            rows[r] = first + r * stride;
             continue;
         }
         rows[r] = padded + TileSize * r;
         std::fill(rows[r], rows[r] + TileSize, -InfiniteDepth);
         if (r < height)
-            std::copy_n(mask.nearerRow(std::uint32_t(oy + r)) + ox, width, rows[r]);
+            std::copy_n(first + r * stride, width, rows[r]);
     }
     std::size_t count = 0;
     // note: with one contributor every covered lane is one of its lanes (a covered pixel's touching
@@ -224,7 +226,7 @@ std::size_t mergeTile(const TileKernels& kernels, OcclusionMask& mask, int tx, i
                                                  : kernels.merge(rows, covered, work.depth, count);
     if (!whole)
         for (int r = 0; r < height; ++r)
-            std::copy_n(rows[r], width, mask.nearerRow(std::uint32_t(oy + r)) + ox);
+            std::copy_n(rows[r], width, first + r * stride);
     mask.setTileBound(std::uint32_t(tx), std::uint32_t(ty), largest);
     return count;
 }

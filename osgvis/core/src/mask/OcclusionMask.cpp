@@ -93,8 +93,13 @@ void OcclusionMask::reset(std::uint32_t width, std::uint32_t height)
 
 void OcclusionMask::setTileBound(std::uint32_t tx, std::uint32_t ty, float largestDepth)
 {
-    _tileBound[std::size_t(ty) * tileColumns() + tx] = largestDepth;
-    recomputeBlockBound(tx / BlockTiles, ty / BlockTiles);
+    float& tile = _tileBound[std::size_t(ty) * tileColumns() + tx];
+    const float block = blockBound(tx / BlockTiles, ty / BlockTiles);
+    const bool wasLargest = !(tile < block);
+    tile = largestDepth;
+    // A block's bound changes only when this tile held its largest value or now exceeds it.
+    if (wasLargest || !(largestDepth <= block))
+        recomputeBlockBound(tx / BlockTiles, ty / BlockTiles);
 }
 
 void OcclusionMask::recomputeBlockBound(std::uint32_t bx, std::uint32_t by)
