@@ -106,6 +106,36 @@ bool tileSpan(const PolygonSetup& s, int ty, int& first, int& last)
 
 // What a group has put into one tile so far. While one polygon alone gives depths, its plane is
 // kept instead of depths (merged on the way into the mask); a second one fills `depth`.
+// Tile columns of tile row `ty` (pixel rows y0..y1 inside the mask) whose every pixel lies inside
+// every edge of the polygon (outline edges: f ≥ reach at every pixel centre of the whole 8 × 8 tile;
+// shared edges: f ≥ -reach), with a margin of 1e-4 px over the rounding of this division. Such a
+// tile needs no classification: each of its pixels touches the polygon and is beyond none of its
+// outline edges, exactly as the reference decides (each decision clears its threshold by the margin).
+void insideSpan(const PolygonSetup& s, int y0, int y1, int& first, int& last)
+{
+    constexpr double Margin = 1e-4;
+    double low = -1.0, high = 1e9;
+    for (std::size_t e = 0; e < s.edgeCount && low <= high; ++e)
+    {
+        const double threshold = (s.outline[e] ? s.reach[e] : -s.reach[e]) + Margin;
+        const double rest = threshold - std::min(s.ny[e] * (y0 + 0.5), s.ny[e] * (y1 + 0.5)) - s.offset[e];
+        if (s.nx[e] == 0.0) // need 0 ≥ rest whatever the column
+            high = rest <= 0.0 ? high : -2.0;
+        else if (s.nx[e] > 0.0) // the tile's leftmost centre 8tx + 0.5 decides
+            low = std::max(low, std::ceil((rest / s.nx[e] - 0.5) / TileSize));
+        else // the rightmost centre 8tx + 7.5
+            high = std::min(high, std::floor((rest / s.nx[e] - 7.5) / TileSize));
+    }
+    if (!(low <= high)) // NaN included
+    {
+        first = 0;
+        last = -1;
+        return;
+    }
+    first = int(std::max(low, -1.0));
+    last = int(std::min(high, 1e9));
+}
+
 struct TileWork
 {
     std::uint64_t touched = 0, vetoed = 0;
@@ -117,9 +147,10 @@ struct TileWork
 };
 
 // One convex polygon over one tile: adds what it touches and vetoes, and its depths where it may
-// count. `tileRange` is the tile's pixels inside the mask.
+// count. `tileRange` is the tile's pixels inside the mask; `inside`: all of them lie inside the
+// polygon (insideSpan), so no edge needs classifying.
 void polygonInTile(const TileKernels& kernels, const PolygonSetup& s, const PixelRange& tileRange, int tx, int ty,
-                   TileWork& work)
+                   bool inside, TileWork& work)
 {
     const PixelRange r = intersect(tileRange, s.pixels);
     const int ox = tx * TileSize, oy = ty * TileSize;
@@ -129,7 +160,7 @@ void polygonInTile(const TileKernels& kernels, const PolygonSetup& s, const Pixe
     bool allOutside = false;
     TileEdges& edges = work.edges;
     edges.count = 0;
-    for (std::size_t e = 0; e < s.edgeCount; ++e)
+    for (std::size_t e = 0; e < (inside ? 0 : s.edgeCount); ++e)
     {
         // The edge function over the range's pixel centres is extreme at its corners.
         const double f = s.nx[e] * cx + s.ny[e] * cy + s.offset[e];
@@ -298,8 +329,10 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
             regionBound = std::max(regionBound, mask.blockBound(std::uint32_t(bx), std::uint32_t(by)));
     if (!(groupNearest < regionBound))
         return 0;
-    std::vector<int>& spans = scratch.tiles->spans; // per polygon: first and last tile column of the row
-    spans.resize(2 * count);
+    // Per polygon, for the current tile row: the first and last tile column it may touch, and the
+    // first and last wholly inside it.
+    std::vector<int>& spans = scratch.tiles->spans;
+    spans.resize(4 * count);
     const PixelRange maskRange{0, 0, int(mask.width()) - 1, int(mask.height()) - 1};
     TileWork work;
     std::size_t covered = 0;
@@ -308,8 +341,10 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
         int rowFirst = std::numeric_limits<int>::max(), rowLast = -1;
         for (std::size_t i = 0; i < count; ++i)
         {
-            int& first = spans[2 * i];
-            int& last = spans[2 * i + 1];
+            int& first = spans[4 * i];
+            int& last = spans[4 * i + 1];
+            spans[4 * i + 2] = 0;
+            spans[4 * i + 3] = -1;
             const PixelRange& p = setups[i].pixels;
             if (shapes[i] == Shape::Convex ? !tileSpan(setups[i], ty, first, last)
                                            : p.empty() || p.y1 < ty * TileSize || p.y0 >= (ty + 1) * TileSize)
@@ -327,6 +362,8 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
             {
                 rowFirst = std::min(rowFirst, first);
                 rowLast = std::max(rowLast, last);
+                insideSpan(setups[i], ty * TileSize, std::min(ty * TileSize + TileSize, int(mask.height())) - 1,
+                           spans[4 * i + 2], spans[4 * i + 3]);
             }
         }
         for (int tx = rowFirst; tx <= rowLast; ++tx)
@@ -348,7 +385,7 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
                 // The tighter test over the tile alone, for groups whose polygons lie at different depths.
                 float tileNearest = InfiniteDepth;
                 for (std::size_t i = 0; i < count; ++i)
-                    if (shapes[i] == Shape::Convex && spans[2 * i] <= tx && tx <= spans[2 * i + 1])
+                    if (shapes[i] == Shape::Convex && spans[4 * i] <= tx && tx <= spans[4 * i + 1])
                         tileNearest = std::min(tileNearest, nearest[i]);
                 if (!(tileNearest < bound))
                     continue;
@@ -357,13 +394,14 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
             work.contributors = 0;
             for (std::size_t i = 0; i < count; ++i)
             {
-                if (tx < spans[2 * i] || tx > spans[2 * i + 1])
+                if (tx < spans[4 * i] || tx > spans[4 * i + 1])
                     continue;
                 const PixelRange r = intersect(tile, setups[i].pixels);
                 if (r.empty())
                     continue;
                 if (shapes[i] == Shape::Convex)
-                    polygonInTile(kernels, setups[i], tile, tx, ty, work);
+                    polygonInTile(kernels, setups[i], tile, tx, ty, spans[4 * i + 2] <= tx && tx <= spans[4 * i + 3],
+                                  work);
                 else // degenerate: vetoes what it touches
                     work.vetoed |= rectBits(r.x0 - tx * TileSize, r.x1 - tx * TileSize, r.y0 - ty * TileSize,
                                             r.y1 - ty * TileSize);
