@@ -139,9 +139,9 @@ template <class Rasterize> OcclusionMask draw(const Scene& scene, Rasterize rast
 
 OcclusionMask drawReference(const Scene& scene)
 {
-    return draw(scene, [](OcclusionMask& mask, const ScreenPolygon* p, std::size_t n, double shrink,
-                          MaskRasterScratch& scratch)
-                { return rasterizeOccluderGroupReference(MaskRasterPath::Simd, mask, p, n, shrink, scratch); });
+    return draw(
+        scene, [](OcclusionMask& mask, const ScreenPolygon* p, std::size_t n, double shrink, MaskRasterScratch& scratch)
+        { return rasterizeOccluderGroupReference(MaskRasterPath::Simd, mask, p, n, shrink, scratch); });
 }
 
 OcclusionMask drawTiles(const Scene& scene, MaskTileKernel kernel)
@@ -220,12 +220,12 @@ TEST(MaskTileRasterizer, FarGroupsBehindACoveredMaskChangeNothing)
         {
             bool behind = true;
             for (const ScreenPolygon& p : scene.groups[g])
-                behind = behind && p.depth.inverse && p.depth.c + std::abs(p.depth.a) * (w + 20) +
-                                                              std::abs(p.depth.b) * (h + 20) < 0.9;
+                behind = behind && p.depth.inverse &&
+                         p.depth.c + std::abs(p.depth.a) * (w + 20) + std::abs(p.depth.b) * (h + 20) < 0.9;
             if (behind)
             {
-                EXPECT_EQ(rasterizeOccluderGroup(mask, scene.groups[g].data(), scene.groups[g].size(),
-                                                 scene.shrinks[g], scratch),
+                EXPECT_EQ(rasterizeOccluderGroup(mask, scene.groups[g].data(), scene.groups[g].size(), scene.shrinks[g],
+                                                 scratch),
                           0u);
             }
         }

@@ -105,7 +105,6 @@ DepthPlane randomPlane(std::mt19937& random, glm::dvec2 around)
     return plane;
 }
 
-
 std::vector<ScreenPolygon> randomCutGroup(std::mt19937& random, const std::vector<glm::dvec2>& hull, int cuts,
                                           const DepthPlane& plane)
 {

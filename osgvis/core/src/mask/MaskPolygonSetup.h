@@ -46,7 +46,8 @@ struct PolygonSetup
     std::size_t edgeCount = 0;
     std::array<double, MaxEdges> nx, ny, offset, reach;
     std::array<bool, MaxEdges> outline;
-    std::array<float, MaxEdges> slope, slopeY, reachF, insideLimit; // float nx, ny, reach; insideLimit: -inf for shared edges
+    std::array<float, MaxEdges> slope, slopeY, reachF,
+        insideLimit; // float nx, ny, reach; insideLimit: -inf for shared edges
     // Largest depth over the grown square centred at p, in the affine form v = da·x + db·y + dc:
     // the smallest 1/depth (perspective) or the largest depth (orthographic) over its corners.
     double da = 0.0, db = 0.0, dc = 0.0;

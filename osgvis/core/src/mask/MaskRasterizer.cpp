@@ -49,7 +49,8 @@ constexpr double ClassifyMargin = 1e-6;
 std::uint64_t rectBits(int x0, int x1, int y0, int y1) // tile-relative, inclusive
 {
     const std::uint64_t row = (0xffu >> (TileSize - 1 - x1)) & (0xffu << x0);
-    const std::uint64_t rows = (~std::uint64_t(0) >> (TileSize * (TileSize - 1 - y1))) & (~std::uint64_t(0) << (TileSize * y0));
+    const std::uint64_t rows =
+        (~std::uint64_t(0) >> (TileSize * (TileSize - 1 - y1))) & (~std::uint64_t(0) << (TileSize * y0));
     return row * 0x0101010101010101ull & rows;
 }
 
@@ -67,7 +68,7 @@ float smallestDepth(const PolygonSetup& s, const PixelRange& r, double shrink)
     const double x0 = r.x0 - shrink, x1 = r.x1 + 1 + shrink, y0 = r.y0 - shrink, y1 = r.y1 + 1 + shrink;
     const double ax = std::max(p.a * x0, p.a * x1), ay = std::max(p.b * y0, p.b * y1);
     const double slack = double(s.depthAbsMargin) + 1e-9 * (std::abs(p.a * x0) + std::abs(p.a * x1) +
-                                                             std::abs(p.b * y0) + std::abs(p.b * y1) + std::abs(p.c));
+                                                            std::abs(p.b * y0) + std::abs(p.b * y1) + std::abs(p.c));
     if (p.inverse)
     {
         const double largestInverse = ax + ay + p.c + slack;
@@ -273,7 +274,8 @@ bool cpuHasAvx2()
 
 const TileKernels& kernelsFor(MaskTileKernel kernel)
 {
-    const TileKernels* avx2 = kernel == MaskTileKernel::Avx2 && maskTileKernelAvailable(kernel) ? avx2TileKernels() : nullptr;
+    const TileKernels* avx2 =
+        kernel == MaskTileKernel::Avx2 && maskTileKernelAvailable(kernel) ? avx2TileKernels() : nullptr;
     return avx2 ? *avx2 : sse2TileKernels();
 }
 } // namespace
@@ -378,8 +380,9 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
             const float bound = mask.tileBound(std::uint32_t(tx), std::uint32_t(ty));
             if (!(groupNearest < bound))
                 continue;
-            const PixelRange tile = intersect(
-                maskRange, PixelRange{tx * TileSize, ty * TileSize, tx * TileSize + TileSize - 1, ty * TileSize + TileSize - 1});
+            const PixelRange tile =
+                intersect(maskRange, PixelRange{tx * TileSize, ty * TileSize, tx * TileSize + TileSize - 1,
+                                                ty * TileSize + TileSize - 1});
             if (count > 1)
             {
                 // The tighter test over the tile alone, for groups whose polygons lie at different depths.

@@ -23,6 +23,8 @@ namespace
 {
 alignas(32) constexpr float LaneIndices[TileSize] = {0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f};
 
+// One line per lane operation: a table to read across the two kernel files.
+// clang-format off
 struct Row
 {
     __m256 v;
@@ -61,6 +63,7 @@ inline float largestLane(Row a)
     return _mm_cvtss_f32(m);
 }
 
+// clang-format on
 #include "MaskTileKernelsImpl.h"
 } // namespace
 } // namespace osgVis::core::maskraster

@@ -45,8 +45,8 @@ inline Row planeDepthRow(const TileDepth& plane, int r)
 {
     const Row start = add(Row::splat(plane.v0), mul(Row::splat(plane.db), Row::splat(float(r))));
     const Row v = add(start, mul(Row::splat(plane.da), laneIndex()));
-    const Row margin =
-        add(mul(add(absolute(v), Row::splat(plane.spread)), Row::splat(TileDepthRelativeMargin)), Row::splat(plane.absMargin));
+    const Row margin = add(mul(add(absolute(v), Row::splat(plane.spread)), Row::splat(TileDepthRelativeMargin)),
+                           Row::splat(plane.absMargin));
     if (!plane.inverse)
         return add(v, margin);
     const Row w = sub(v, margin);
@@ -83,7 +83,8 @@ float tileMerge(float* const rows[TileSize], std::uint64_t lanes, const float* d
     for (int r = 0; r < TileSize; ++r)
     {
         const unsigned bits = unsigned(lanes >> (TileSize * r)) & 0xffu;
-        largest = max(largest, bits == 0 ? Row::load(rows[r]) : mergeRow(rows[r], bits, Row::load(depth + TileSize * r), covered));
+        largest = max(largest, bits == 0 ? Row::load(rows[r])
+                                         : mergeRow(rows[r], bits, Row::load(depth + TileSize * r), covered));
     }
     return largestLane(largest);
 }
@@ -94,7 +95,8 @@ float tilePlaneMerge(float* const rows[TileSize], std::uint64_t lanes, const Til
     for (int r = 0; r < TileSize; ++r)
     {
         const unsigned bits = unsigned(lanes >> (TileSize * r)) & 0xffu;
-        largest = max(largest, bits == 0 ? Row::load(rows[r]) : mergeRow(rows[r], bits, planeDepthRow(plane, r), covered));
+        largest =
+            max(largest, bits == 0 ? Row::load(rows[r]) : mergeRow(rows[r], bits, planeDepthRow(plane, r), covered));
     }
     return largestLane(largest);
 }

@@ -14,6 +14,8 @@ namespace
 {
 alignas(32) constexpr float LaneIndices[TileSize] = {0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f};
 
+// One line per lane operation: a table to read across the two kernel files.
+// clang-format off
 #ifdef __SSE2__
 struct Row
 {
@@ -145,6 +147,7 @@ inline float largestLane(Row a)
         m = a.v[j] > m ? a.v[j] : m;
     return m;
 }
+// clang-format on
 #endif
 
 #include "MaskTileKernelsImpl.h"
