@@ -227,7 +227,7 @@ bool OcclusionMask::texelHidden(std::size_t level, std::uint32_t tx, std::uint32
     // uncovered one being +inf). Otherwise one of its pixels (or a missing child beyond the mask)
     // is not nearer: decisive when the rectangle spans the texel's whole (unclipped) footprint,
     // else the children the rectangle overlaps decide.
-    if (_levels[level][std::size_t(ty) * _levelWidth[level] + tx] < nearestDepth)
+    if (texel(level, tx, ty) < nearestDepth)
         return true;
     if (level == 0)
         return false;
@@ -245,33 +245,85 @@ bool OcclusionMask::texelHidden(std::size_t level, std::uint32_t tx, std::uint32
     return true;
 }
 
-bool OcclusionMask::rectHidden(double x0, double y0, double x1, double y1, float nearestDepth) const
+bool OcclusionMask::rectPixels(double x0, double y0, double x1, double y1, float nearestDepth,
+                               std::uint32_t pixels[4]) const
 {
     // note: every comparison is written so that NaN makes it fail.
     if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= double(_width) && y1 <= double(_height) && x0 <= x1 && y0 <= y1))
         return false;
     if (_width == 0 || _height == 0 || std::isnan(nearestDepth))
         return false;
-    const std::uint32_t pixels[4] = {std::uint32_t(std::floor(x0)), std::uint32_t(std::floor(y0)),
-                                     std::min(std::uint32_t(std::floor(x1)), _width - 1),
-                                     std::min(std::uint32_t(std::floor(y1)), _height - 1)};
-    if (_levels.empty())
-    {
-        for (std::uint32_t y = pixels[1]; y <= pixels[3]; ++y)
-            for (std::uint32_t x = pixels[0]; x <= pixels[2]; ++x)
-                if (!(_base[std::size_t(y) * _width + x] < nearestDepth))
-                    return false;
-        return true;
-    }
-    // Finest level where the rectangle spans at most 2×2 texels: few reads, yet texels small
-    // enough to be decisive.
+    pixels[0] = std::uint32_t(std::floor(x0));
+    pixels[1] = std::uint32_t(std::floor(y0));
+    pixels[2] = std::min(std::uint32_t(std::floor(x1)), _width - 1);
+    pixels[3] = std::min(std::uint32_t(std::floor(y1)), _height - 1);
+    return true;
+}
+
+bool OcclusionMask::scanHidden(const std::uint32_t pixels[4], float nearestDepth) const
+{
+    for (std::uint32_t y = pixels[1]; y <= pixels[3]; ++y)
+        for (std::uint32_t x = pixels[0]; x <= pixels[2]; ++x)
+            if (!(_base[std::size_t(y) * _width + x] < nearestDepth))
+                return false;
+    return true;
+}
+
+std::size_t OcclusionMask::spanLevel(const std::uint32_t pixels[4]) const
+{
+    // Finest level where the rectangle spans at most 2×2 texels.
     std::size_t level = 0;
     while (level + 1 < _levels.size() &&
            ((pixels[2] >> level) - (pixels[0] >> level) > 1 || (pixels[3] >> level) - (pixels[1] >> level) > 1))
         ++level;
+    return level;
+}
+
+bool OcclusionMask::rectHiddenReference(double x0, double y0, double x1, double y1, float nearestDepth) const
+{
+    std::uint32_t pixels[4];
+    if (!rectPixels(x0, y0, x1, y1, nearestDepth, pixels))
+        return false;
+    if (_levels.empty())
+        return scanHidden(pixels, nearestDepth);
+    const std::size_t level = spanLevel(pixels);
     for (std::uint32_t ty = pixels[1] >> level; ty <= pixels[3] >> level; ++ty)
         for (std::uint32_t tx = pixels[0] >> level; tx <= pixels[2] >> level; ++tx)
             if (!texelHidden(level, tx, ty, pixels, nearestDepth))
+                return false;
+    return true;
+}
+
+bool OcclusionMask::rectHidden(double x0, double y0, double x1, double y1, float nearestDepth) const
+{
+    std::uint32_t pixels[4];
+    if (!rectPixels(x0, y0, x1, y1, nearestDepth, pixels))
+        return false;
+    if (_levels.empty())
+        return scanHidden(pixels, nearestDepth);
+    // 1. At most 2×2 coarse texels: all nearer, hidden (the common answer, in four reads).
+    const std::size_t coarse = spanLevel(pixels);
+    bool nearer = true;
+    for (std::uint32_t ty = pixels[1] >> coarse; nearer && ty <= pixels[3] >> coarse; ++ty)
+        for (std::uint32_t tx = pixels[0] >> coarse; nearer && tx <= pixels[2] >> coarse; ++tx)
+            nearer = texel(coarse, tx, ty) < nearestDepth;
+    if (nearer)
+        return true;
+    // 2. Two levels finer (at most 8×8 texels): a texel wholly inside the rectangle that is not
+    // nearer decides at once (visible), so those go first; the texels on its border that are not
+    // nearer are refined down to the pixels they share with the rectangle.
+    const std::size_t level = coarse >= 2 ? coarse - 2 : 0;
+    const std::uint32_t tx0 = pixels[0] >> level, tx1 = pixels[2] >> level;
+    const std::uint32_t ty0 = pixels[1] >> level, ty1 = pixels[3] >> level;
+    auto inside = [&](std::uint32_t t, int axis)
+    { return pixels[axis] <= (t << level) && ((std::uint64_t(t) + 1) << level) - 1 <= pixels[axis + 2]; };
+    for (std::uint32_t ty = ty0; ty <= ty1; ++ty)
+        for (std::uint32_t tx = tx0; tx <= tx1; ++tx)
+            if (inside(tx, 0) && inside(ty, 1) && !(texel(level, tx, ty) < nearestDepth))
+                return false;
+    for (std::uint32_t ty = ty0; ty <= ty1; ++ty)
+        for (std::uint32_t tx = tx0; tx <= tx1; ++tx)
+            if (!(inside(tx, 0) && inside(ty, 1)) && !texelHidden(level, tx, ty, pixels, nearestDepth))
                 return false;
     return true;
 }

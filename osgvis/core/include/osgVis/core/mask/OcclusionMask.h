@@ -70,12 +70,16 @@ public:
 
     /// True only when every pixel that the rectangle [x0, x1] × [y0, y1] (mask coordinates, closed)
     /// overlaps is covered with a stored depth strictly less than `nearestDepth`. A rectangle
-    /// reaching outside the mask is never hidden. Needs buildPyramid(); coarse levels first, finer
-    /// ones only where a coarse texel is inconclusive.
+    /// reaching outside the mask is never hidden. Needs buildPyramid(): the (at most 2×2) coarse
+    /// texels first, then two levels finer the texels wholly inside the rectangle (an early visible
+    /// answer), and the border texels refined only where they are inconclusive.
     /// It overlaps pixels floor(x0)..floor(x1) (and likewise in y): an edge lying exactly on a pixel
     /// boundary still counts the pixel beyond it (conservative). Empty (x0 > x1), NaN or partly
     /// outside rectangles and a NaN `nearestDepth` give false. Without a pyramid, level 0 is scanned.
     bool rectHidden(double x0, double y0, double x1, double y1, float nearestDepth) const;
+    /// The same answer by the earlier query (the coarse texels refined depth-first, without the
+    /// finer level's early visible answer): the reference of the tests and benchmarks.
+    bool rectHiddenReference(double x0, double y0, double x1, double y1, float nearestDepth) const;
 
 private:
     void dropPyramid();
@@ -83,6 +87,13 @@ private:
     const std::vector<float>& levelZero() const { return _levels.empty() ? _base : _levels[0]; }
     void recomputeTileBounds();
     void recomputeBlockBound(std::uint32_t bx, std::uint32_t by);
+    float texel(std::size_t level, std::uint32_t tx, std::uint32_t ty) const
+    {
+        return _levels[level][std::size_t(ty) * _levelWidth[level] + tx];
+    }
+    bool rectPixels(double x0, double y0, double x1, double y1, float nearestDepth, std::uint32_t pixels[4]) const;
+    bool scanHidden(const std::uint32_t pixels[4], float nearestDepth) const;
+    std::size_t spanLevel(const std::uint32_t pixels[4]) const;
     bool texelHidden(std::size_t level, std::uint32_t tx, std::uint32_t ty, const std::uint32_t pixels[4],
                      float nearestDepth) const;
 
