@@ -105,8 +105,6 @@ bool tileSpan(const PolygonSetup& s, int ty, int& first, int& last)
     return true;
 }
 
-// What a group has put into one tile so far. While one polygon alone gives depths, its plane is
-// kept instead of depths (merged on the way into the mask); a second one fills `depth`.
 // Tile columns of tile row `ty` (pixel rows y0..y1 inside the mask) whose every pixel lies inside
 // every edge of the polygon (outline edges: f ≥ reach at every pixel centre of the whole 8 × 8 tile;
 // shared edges: f ≥ -reach), with a margin of 1e-4 px over the rounding of this division. Such a
@@ -137,6 +135,8 @@ void insideSpan(const PolygonSetup& s, int y0, int y1, int& first, int& last)
     last = int(std::min(high, 1e9));
 }
 
+// What a group has put into one tile so far. While one polygon alone gives depths, its plane is
+// kept instead of depths (merged on the way into the mask); a second one fills `depth`.
 struct TileWork
 {
     std::uint64_t touched = 0, vetoed = 0;
