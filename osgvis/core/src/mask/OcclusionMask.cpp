@@ -269,6 +269,18 @@ bool OcclusionMask::scanHidden(const std::uint32_t pixels[4], float nearestDepth
     return true;
 }
 
+bool OcclusionMask::decidedWithoutPyramid(double x0, double y0, double x1, double y1, float nearestDepth,
+                                          std::uint32_t pixels[4], bool& hidden) const
+{
+    hidden = false;
+    if (!rectPixels(x0, y0, x1, y1, nearestDepth, pixels))
+        return true;
+    if (!_levels.empty())
+        return false;
+    hidden = scanHidden(pixels, nearestDepth);
+    return true;
+}
+
 std::size_t OcclusionMask::spanLevel(const std::uint32_t pixels[4]) const
 {
     // Finest level where the rectangle spans at most 2×2 texels.
@@ -279,30 +291,32 @@ std::size_t OcclusionMask::spanLevel(const std::uint32_t pixels[4]) const
     return level;
 }
 
-bool OcclusionMask::rectHiddenReference(double x0, double y0, double x1, double y1, float nearestDepth) const
-{
-    std::uint32_t pixels[4];
-    if (!rectPixels(x0, y0, x1, y1, nearestDepth, pixels))
-        return false;
-    if (_levels.empty())
-        return scanHidden(pixels, nearestDepth);
-    const std::size_t level = spanLevel(pixels);
-    for (std::uint32_t ty = pixels[1] >> level; ty <= pixels[3] >> level; ++ty)
-        for (std::uint32_t tx = pixels[0] >> level; tx <= pixels[2] >> level; ++tx)
-            if (!texelHidden(level, tx, ty, pixels, nearestDepth))
-                return false;
-    return true;
-}
-
 bool OcclusionMask::rectHidden(double x0, double y0, double x1, double y1, float nearestDepth) const
 {
+    return query(x0, y0, x1, y1, nearestDepth, false);
+}
+
+bool OcclusionMask::rectHiddenReference(double x0, double y0, double x1, double y1, float nearestDepth) const
+{
+    return query(x0, y0, x1, y1, nearestDepth, true);
+}
+
+bool OcclusionMask::query(double x0, double y0, double x1, double y1, float nearestDepth, bool depthFirst) const
+{
     std::uint32_t pixels[4];
-    if (!rectPixels(x0, y0, x1, y1, nearestDepth, pixels))
-        return false;
-    if (_levels.empty())
-        return scanHidden(pixels, nearestDepth);
-    // 1. At most 2×2 coarse texels: all nearer, hidden (the common answer, in four reads).
+    bool answer = false;
+    if (decidedWithoutPyramid(x0, y0, x1, y1, nearestDepth, pixels, answer))
+        return answer;
     const std::size_t coarse = spanLevel(pixels);
+    if (depthFirst) // the earlier order: each coarse texel refined in turn
+    {
+        for (std::uint32_t ty = pixels[1] >> coarse; ty <= pixels[3] >> coarse; ++ty)
+            for (std::uint32_t tx = pixels[0] >> coarse; tx <= pixels[2] >> coarse; ++tx)
+                if (!texelHidden(coarse, tx, ty, pixels, nearestDepth))
+                    return false;
+        return true;
+    }
+    // 1. At most 2×2 coarse texels: all nearer, hidden (the common answer, in four reads).
     bool nearer = true;
     for (std::uint32_t ty = pixels[1] >> coarse; nearer && ty <= pixels[3] >> coarse; ++ty)
         for (std::uint32_t tx = pixels[0] >> coarse; nearer && tx <= pixels[2] >> coarse; ++tx)
@@ -317,14 +331,18 @@ bool OcclusionMask::rectHidden(double x0, double y0, double x1, double y1, float
     const std::uint32_t ty0 = pixels[1] >> level, ty1 = pixels[3] >> level;
     auto inside = [&](std::uint32_t t, int axis)
     { return pixels[axis] <= (t << level) && ((std::uint64_t(t) + 1) << level) - 1 <= pixels[axis + 2]; };
-    for (std::uint32_t ty = ty0; ty <= ty1; ++ty)
-        for (std::uint32_t tx = tx0; tx <= tx1; ++tx)
-            if (inside(tx, 0) && inside(ty, 1) && !(texel(level, tx, ty) < nearestDepth))
-                return false;
-    for (std::uint32_t ty = ty0; ty <= ty1; ++ty)
-        for (std::uint32_t tx = tx0; tx <= tx1; ++tx)
-            if (!(inside(tx, 0) && inside(ty, 1)) && !texelHidden(level, tx, ty, pixels, nearestDepth))
-                return false;
-    return true;
+    auto pass = [&](bool wholly)
+    {
+        for (std::uint32_t ty = ty0; ty <= ty1; ++ty)
+            for (std::uint32_t tx = tx0; tx <= tx1; ++tx)
+            {
+                if ((inside(tx, 0) && inside(ty, 1)) != wholly)
+                    continue;
+                if (wholly ? !(texel(level, tx, ty) < nearestDepth) : !texelHidden(level, tx, ty, pixels, nearestDepth))
+                    return false;
+            }
+        return true;
+    };
+    return pass(true) && pass(false);
 }
 } // namespace osgVis::core

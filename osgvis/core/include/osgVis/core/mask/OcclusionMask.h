@@ -93,6 +93,10 @@ private:
     }
     bool rectPixels(double x0, double y0, double x1, double y1, float nearestDepth, std::uint32_t pixels[4]) const;
     bool scanHidden(const std::uint32_t pixels[4], float nearestDepth) const;
+    bool query(double x0, double y0, double x1, double y1, float nearestDepth, bool depthFirst) const;
+    /// Invalid rectangles (false) and masks without a pyramid (scanned) are decided here.
+    bool decidedWithoutPyramid(double x0, double y0, double x1, double y1, float nearestDepth, std::uint32_t pixels[4],
+                               bool& hidden) const;
     std::size_t spanLevel(const std::uint32_t pixels[4]) const;
     bool texelHidden(std::size_t level, std::uint32_t tx, std::uint32_t ty, const std::uint32_t pixels[4],
                      float nearestDepth) const;
