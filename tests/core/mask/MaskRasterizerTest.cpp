@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Conservative group rasterization: exact pixel sets worked out by hand, depths (max over the
 // pixel, +inf at the horizon), and the key randomized property: every point of every covered
-// pixel (grown by the shrink) lies inside the occluder, nearer than the stored depth. Also checks
-// that the SSE2 and the scalar inner loops agree bit for bit (internal src/MaskRasterPaths.h).
+// pixel (grown by the shrink) lies inside the occluder, nearer than the stored depth, for the tile
+// rasterizer and the reference. Also checks that the reference's SSE2 and scalar inner loops agree
+// bit for bit (internal src/MaskRasterPaths.h). The tile rasterizer against the reference:
+// MaskTileRasterizerTest.cpp.
+#include "RandomOccluderGroups.h"
 #include "mask/MaskRasterPaths.h"
 
 #include <glm/glm.hpp>
@@ -17,6 +20,7 @@
 #include <vector>
 
 using namespace osgVis::core;
+using namespace maskTest;
 
 namespace
 {
@@ -75,14 +79,23 @@ PixelSet unite(PixelSet a, const PixelSet& b)
     return a;
 }
 
+using GroupRasterizer = std::size_t (*)(OcclusionMask&, const ScreenPolygon*, std::size_t, double, MaskRasterScratch&);
+
+std::size_t referenceRasterizer(OcclusionMask& mask, const ScreenPolygon* polygons, std::size_t count, double shrink,
+                                MaskRasterScratch& scratch)
+{
+    return rasterizeOccluderGroupReference(MaskRasterPath::Simd, mask, polygons, count, shrink, scratch);
+}
+
 // Rasterizes one group into a fresh mask and returns the covered pixels.
 PixelSet rasterize(std::uint32_t width, std::uint32_t height, const std::vector<ScreenPolygon>& group,
-                   double shrink = 0.0, std::size_t* coveredCount = nullptr, OcclusionMask* out = nullptr)
+                   double shrink = 0.0, std::size_t* coveredCount = nullptr, OcclusionMask* out = nullptr,
+                   GroupRasterizer rasterizer = rasterizeOccluderGroup)
 {
     OcclusionMask mask;
     mask.reset(width, height);
     MaskRasterScratch scratch;
-    const std::size_t covered = rasterizeOccluderGroup(mask, group.data(), group.size(), shrink, scratch);
+    const std::size_t covered = rasterizer(mask, group.data(), group.size(), shrink, scratch);
     if (coveredCount)
         *coveredCount = covered;
     if (out)
@@ -310,77 +323,6 @@ TEST(MaskRasterizer, DepthPlaneMaxOverSquareUsesTheCorners)
 
 namespace
 {
-// Convex hull (counter-clockwise, no collinear points) of random points.
-std::vector<glm::dvec2> randomConvexPolygon(std::mt19937& random, double size)
-{
-    std::uniform_real_distribution<double> centre(-10.0, size + 10.0), unit(0.0, 1.0);
-    const glm::dvec2 middle{centre(random), centre(random)};
-    const double radius = 3.0 + unit(random) * size * 0.6;
-    std::vector<glm::dvec2> points(3 + random() % 10);
-    for (glm::dvec2& p : points)
-    {
-        const double angle = unit(random) * 2.0 * M_PI, r = radius * std::sqrt(unit(random));
-        p = middle + glm::dvec2{r * std::cos(angle), r * std::sin(angle) * (0.3 + unit(random))};
-    }
-    std::sort(points.begin(), points.end(), [](auto a, auto b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-    auto cross = [](glm::dvec2 o, glm::dvec2 a, glm::dvec2 b)
-    { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
-    std::vector<glm::dvec2> hull(2 * points.size());
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < points.size(); ++i)
-    {
-        while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
-            --k;
-        hull[k++] = points[i];
-    }
-    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;)
-    {
-        while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
-            --k;
-        hull[k++] = points[i];
-    }
-    hull.resize(k - 1);
-    return hull;
-}
-
-struct Piece
-{
-    std::vector<glm::dvec2> vertices;
-    std::vector<bool> shared;
-};
-
-// Cuts a piece along a chord between points on two of its edges; the chord is shared by both halves.
-void cut(std::mt19937& random, std::vector<Piece>& pieces)
-{
-    Piece& piece = pieces[random() % pieces.size()];
-    const std::size_t n = piece.vertices.size();
-    const std::size_t i = random() % n, j = (i + 1 + random() % (n - 1)) % n; // two different edges
-    std::uniform_real_distribution<double> along(0.1, 0.9);
-    auto pointOn = [&](std::size_t e)
-    { return glm::mix(piece.vertices[e], piece.vertices[(e + 1) % n], along(random)); };
-    const glm::dvec2 p = pointOn(i), q = pointOn(j);
-    // One half walks p → v[i+1] … v[j] → q → p, the other q → v[j+1] … v[i] → p → q.
-    auto half = [&](glm::dvec2 start, std::size_t from, std::size_t to, glm::dvec2 end)
-    {
-        Piece result;
-        result.vertices.push_back(start);
-        result.shared.push_back(piece.shared[from]);
-        for (std::size_t k = (from + 1) % n;; k = (k + 1) % n)
-        {
-            result.vertices.push_back(piece.vertices[k]);
-            result.shared.push_back(k == to ? piece.shared[to] : piece.shared[k]);
-            if (k == to)
-                break;
-        }
-        result.vertices.push_back(end);
-        result.shared.push_back(true); // the chord
-        return result;
-    };
-    Piece a = half(p, i, j, q), b = half(q, j, i, p);
-    piece = std::move(a);
-    pieces.push_back(std::move(b));
-}
-
 double signedDistanceInside(const std::vector<glm::dvec2>& ccw, glm::dvec2 point)
 {
     double distance = Inf;
@@ -392,23 +334,6 @@ double signedDistanceInside(const std::vector<glm::dvec2>& ccw, glm::dvec2 point
     return distance;
 }
 
-DepthPlane randomPlane(std::mt19937& random, glm::dvec2 around)
-{
-    std::uniform_real_distribution<double> slope(-0.01, 0.01), level(0.02, 0.5);
-    DepthPlane plane;
-    plane.inverse = random() % 4 != 0;
-    plane.a = slope(random);
-    plane.b = slope(random);
-    plane.c = level(random) - plane.a * around.x - plane.b * around.y;
-    if (!plane.inverse)
-    {
-        plane.a *= 100.0;
-        plane.b *= 100.0;
-        plane.c = 50.0 + plane.c * 100.0;
-    }
-    return plane;
-}
-
 double depthAt(const DepthPlane& plane, glm::dvec2 p)
 {
     const double value = plane.a * p.x + plane.b * p.y + plane.c;
@@ -416,7 +341,9 @@ double depthAt(const DepthPlane& plane, glm::dvec2 p)
 }
 } // namespace
 
-TEST(MaskRasterizer, RandomGroupsCoverOnlyPointsInsideAndNearerThanStored)
+namespace
+{
+void checkRandomGroupsCoverOnlyPointsInsideAndNearer(GroupRasterizer rasterizer)
 {
     std::mt19937 random(5);
     const std::uint32_t size = 64;
@@ -425,29 +352,13 @@ TEST(MaskRasterizer, RandomGroupsCoverOnlyPointsInsideAndNearerThanStored)
     for (int groupIndex = 0; groupIndex < 400; ++groupIndex)
     {
         const std::vector<glm::dvec2> hull = randomConvexPolygon(random, size);
-        std::vector<Piece> pieces = {{hull, std::vector<bool>(hull.size(), false)}};
         const int cuts = 1 + int(random() % 3);
-        for (int c = 0; c < cuts; ++c)
-            cut(random, pieces);
         const DepthPlane plane = randomPlane(random, hull[0]);
-        std::vector<ScreenPolygon> group;
-        for (Piece& piece : pieces)
-        {
-            if (random() % 2 == 0) // clockwise: edge k of the reversed polygon is edge n-2-k
-            {
-                const std::size_t n = piece.vertices.size();
-                std::reverse(piece.vertices.begin(), piece.vertices.end());
-                std::vector<bool> shared(n);
-                for (std::size_t k = 0; k < n; ++k)
-                    shared[k] = piece.shared[(2 * n - 2 - k) % n];
-                piece.shared = shared;
-            }
-            group.push_back(polygon(piece.vertices, piece.shared, plane));
-        }
+        const std::vector<ScreenPolygon> group = randomCutGroup(random, hull, cuts, plane);
         const double shrink = random() % 3 == 0 ? double(random() % 4) : 3.0 * unit(random);
         OcclusionMask mask;
         std::size_t count = 0;
-        rasterize(size, size, group, shrink, &count, &mask);
+        rasterize(size, size, group, shrink, &count, &mask, rasterizer);
         ASSERT_EQ(count, mask.coveredPixels());
         coveredTotal += count;
 
@@ -488,6 +399,17 @@ TEST(MaskRasterizer, RandomGroupsCoverOnlyPointsInsideAndNearerThanStored)
     EXPECT_GT(coveredTotal, 50000u);
     EXPECT_GT(compared, 400u * 3500u);
 }
+} // namespace
+
+TEST(MaskRasterizer, RandomGroupsCoverOnlyPointsInsideAndNearerThanStored)
+{
+    checkRandomGroupsCoverOnlyPointsInsideAndNearer(rasterizeOccluderGroup);
+}
+
+TEST(MaskRasterizer, ReferenceCoversOnlyPointsInsideAndNearerThanStored)
+{
+    checkRandomGroupsCoverOnlyPointsInsideAndNearer(referenceRasterizer);
+}
 
 TEST(MaskRasterizer, VectorAndScalarPathsAgreeBitForBit)
 {
@@ -520,9 +442,9 @@ TEST(MaskRasterizer, VectorAndScalarPathsAgreeBitForBit)
         scalar.reset(96, 80);
         vector.reset(96, 80);
         const std::size_t scalarCount =
-            rasterizeOccluderGroupWith(MaskRasterPath::Scalar, scalar, group.data(), group.size(), shrink, scratch);
+            rasterizeOccluderGroupReference(MaskRasterPath::Scalar, scalar, group.data(), group.size(), shrink, scratch);
         const std::size_t vectorCount =
-            rasterizeOccluderGroupWith(MaskRasterPath::Simd, vector, group.data(), group.size(), shrink, scratch);
+            rasterizeOccluderGroupReference(MaskRasterPath::Simd, vector, group.data(), group.size(), shrink, scratch);
         ASSERT_EQ(scalarCount, vectorCount) << groupIndex;
         for (std::uint32_t y = 0; y < 80; ++y)
             ASSERT_EQ(std::memcmp(scalar.baseRow(y), vector.baseRow(y), 96 * sizeof(float)), 0)

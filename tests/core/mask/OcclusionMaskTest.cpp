@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// OcclusionMask: covering, the max-depth pyramid and its hierarchical rectangle test (checked
-// against a brute-force scan of level 0), and the erosion of mask-approx (against brute force).
+// OcclusionMask: covering, the max-depth pyramid and its hierarchical rectangle test and the
+// earlier one kept as the reference (both checked against a brute-force scan of level 0), and the erosion of mask-approx (against brute force).
 #include <osgVis/core/mask/OcclusionMask.h>
 
 #include <gtest/gtest.h>
@@ -202,6 +202,7 @@ TEST(OcclusionMask, HierarchicalTestEqualsBruteForce)
             ASSERT_EQ(mask.rectHidden(x0, y0, x1, y1, depth), expected)
                 << "mask " << maskIndex << " (" << width << "x" << height << ") rect [" << x0 << ", " << x1 << "]x["
                 << y0 << ", " << y1 << "] nearest " << depth;
+            ASSERT_EQ(mask.rectHiddenReference(x0, y0, x1, y1, depth), expected) << "reference, mask " << maskIndex;
             (expected ? hidden : visible)++;
         }
     }

@@ -1,462 +1,425 @@
 // SPDX-License-Identifier: MIT
-// Conservative rasterization of occluder groups into the occlusion mask (the "fully covered pixels
-// only" mask of Wang, Agarwal & Har-Peled). Per polygon, signed edge distances decide for every
-// pixel square (grown by the shrink) whether it touches the polygon (separating-axis test on the
-// polygon's edge normals plus its bounding box, exact for a convex polygon and a square) and
-// whether it lies inside each outline edge; a pixel is covered when it touches some polygon and
-// no touched polygon has it beyond an outline edge.
-//
-// Precision: the inner loop runs in float, 4 pixels at a time. Each 4-pixel block starts from a
-// value computed in double, so a lane's float error is ~1e-6 px near a threshold; lanes within
-// 1e-4 px of any threshold are re-decided in double, so coverage is the double-precision answer.
-// Depths are rounded away from the viewer by a relative margin that exceeds the float error.
+// The tile rasterizer of occluder groups into the occlusion mask: the conservative "fully covered
+// pixels only" contract of Wang, Agarwal & Har-Peled's mask (MaskRasterizer.h), organised like the
+// fast software occlusion rasterizers (Hasselgren, Andersson & Akenine-Möller, "Masked Software
+// Occlusion Culling", HPG 2016): 8 × 8-pixel tiles classified against each edge at their corners
+// as inside, outside or partial, coverage as 64-bit lane masks, a per-tile depth bound that rejects
+// a group where the mask is already covered no farther than anything the group could write, and
+// AVX2 or SSE2 kernels for the pixels of partial tiles and for depths (MaskTileKernels.h). Unlike
+// theirs it samples no pixel centres: every decision is the reference's grown-square test, and
+// lanes near a threshold are decided in double exactly as the reference decides them. Why each
+// shortcut can only keep or lose coverage and only raise depths: docs/mask.md, "The tile
+// rasterizer".
 #include "MaskRasterPaths.h"
+#include "MaskTileKernels.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
-
 namespace osgVis::core
 {
+struct MaskRasterScratch::Tiles
+{
+    std::vector<maskraster::PolygonSetup> setups;
+    std::vector<maskraster::Shape> shapes;
+    std::vector<float> nearest;
+    std::vector<int> spans;
+};
+
+MaskRasterScratch::MaskRasterScratch() = default;
+MaskRasterScratch::~MaskRasterScratch() = default;
+MaskRasterScratch::MaskRasterScratch(const MaskRasterScratch&) {}
+MaskRasterScratch& MaskRasterScratch::operator=(const MaskRasterScratch&)
+{
+    return *this;
+}
+MaskRasterScratch::MaskRasterScratch(MaskRasterScratch&&) noexcept = default;
+MaskRasterScratch& MaskRasterScratch::operator=(MaskRasterScratch&&) noexcept = default;
+
 namespace
 {
-constexpr std::uint8_t Touched = 1;
-constexpr std::uint8_t Vetoed = 2;
-constexpr int Lanes = 4;
-// Polygons with more edges are vetoed (never trusted) rather than tracked in a heap array.
-constexpr std::size_t MaxEdges = 64;
-// Float lanes this close (px) to a threshold are re-decided in double.
-constexpr float Ambiguity = 1e-4f;
-// Exceeds the float lanes' relative depth error (a few 2^-24) with room for the final rounding.
-constexpr float DepthRelativeMargin = 1e-6f;
-// Relative size below which areas, cross products and edge lengths count as zero.
-constexpr double RelativeTolerance = 1e-12;
-constexpr float InfiniteDepth = std::numeric_limits<float>::infinity();
+using namespace maskraster;
 
-struct PixelRange
-{
-    int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
-    bool empty() const { return x0 > x1 || y0 > y1; }
-};
+// Tile classification is done in double, against thresholds moved by this much (px) towards the
+// undecided side: far above the double rounding of an edge function, so a decided edge is decided
+// as the reference decides each of the tile's pixels.
+constexpr double ClassifyMargin = 1e-6;
 
-// Pixels p of [0, size) whose square grown by `shrink`, [p - s, p + 1 + s], meets [lo, hi]; a hair
-// wider than exact so that rounding never loses a touching pixel.
-bool grownSpan(double lo, double hi, double shrink, std::uint32_t size, int& first, int& last)
+std::uint64_t rectBits(int x0, int x1, int y0, int y1) // tile-relative, inclusive
 {
-    const double slack = RelativeTolerance * (1.0 + std::abs(lo) + std::abs(hi) + shrink);
-    const double a = std::max(std::ceil(lo - 1.0 - shrink - slack), 0.0);
-    const double b = std::min(std::floor(hi + shrink + slack), double(size) - 1.0);
-    if (!(a <= b))
+    const std::uint64_t row = (0xffu >> (TileSize - 1 - x1)) & (0xffu << x0);
+    const std::uint64_t rows =
+        (~std::uint64_t(0) >> (TileSize * (TileSize - 1 - y1))) & (~std::uint64_t(0) << (TileSize * y0));
+    return row * 0x0101010101010101ull & rows;
+}
+
+PixelRange intersect(const PixelRange& a, const PixelRange& b)
+{
+    return PixelRange{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
+// The smallest depth the polygon's plane has over the grown squares of the pixels in `r`, rounded
+// towards the viewer: no depth the polygon writes there (each ≥ the plane's largest over one grown
+// square) is smaller.
+float smallestDepth(const PolygonSetup& s, const PixelRange& r, double shrink)
+{
+    const DepthPlane& p = s.plane;
+    const double x0 = r.x0 - shrink, x1 = r.x1 + 1 + shrink, y0 = r.y0 - shrink, y1 = r.y1 + 1 + shrink;
+    const double ax = std::max(p.a * x0, p.a * x1), ay = std::max(p.b * y0, p.b * y1);
+    const double slack = double(s.depthAbsMargin) + 1e-9 * (std::abs(p.a * x0) + std::abs(p.a * x1) +
+                                                            std::abs(p.b * y0) + std::abs(p.b * y1) + std::abs(p.c));
+    if (p.inverse)
+    {
+        const double largestInverse = ax + ay + p.c + slack;
+        return largestInverse > 0.0 ? float(0.999999 / largestInverse) : InfiniteDepth;
+    }
+    const double least = std::min(p.a * x0, p.a * x1) + std::min(p.b * y0, p.b * y1) + p.c - slack;
+    return float(least - 1e-6 * std::abs(least));
+}
+
+// Tile columns of tile row `ty` where the polygon may touch a grown pixel square: its pixel range,
+// narrowed by each edge's touch condition f ≥ -reach over the row band's pixel centres, with a
+// pixel of slack on either side (the kernels still test every pixel they are given).
+bool tileSpan(const PolygonSetup& s, int ty, int& first, int& last)
+{
+    const int y0 = std::max(s.pixels.y0, ty * TileSize), y1 = std::min(s.pixels.y1, ty * TileSize + TileSize - 1);
+    if (y0 > y1 || s.pixels.x0 > s.pixels.x1)
         return false;
-    first = int(a);
-    last = int(b);
-    return true;
-}
-
-enum class Shape
-{
-    Convex,
-    Degenerate, // vetoes its grown bounding box
-    NonFinite   // what it touches is unknown: the whole group is untrusted
-};
-
-// One polygon ready for the inner loop. Edge e: f_e(p) = n_e·p + offset_e is the signed distance
-// (px) of p inside the edge line; the grown square centred at p reaches reach_e = (|n.x|+|n.y|)·h
-// along n_e (h = 0.5 + shrink), so it lies inside when f_e ≥ reach_e and is separated when
-// f_e < -reach_e.
-struct PolygonSetup
-{
-    PixelRange pixels; // its grown bounding box, clipped to the mask
-    std::size_t edgeCount = 0;
-    std::array<double, MaxEdges> nx, ny, offset, reach;
-    std::array<bool, MaxEdges> outline;
-    std::array<float, MaxEdges> slope, reachF, insideLimit; // insideLimit: -inf for shared edges
-    // Largest depth over the grown square centred at p, in the affine form v = da·x + db·y + dc:
-    // the smallest 1/depth (perspective) or the largest depth (orthographic) over its corners.
-    double da = 0.0, db = 0.0, dc = 0.0;
-    float depthSlope = 0.0f, depthSlopeReach = 0.0f, depthAbsMargin = 0.0f;
-    bool inverse = true;
-};
-
-Shape setupPolygon(const ScreenPolygon& polygon, double shrink, const OcclusionMask& mask, PolygonSetup& setup)
-{
-    const std::vector<glm::dvec2>& v = polygon.vertices;
-    double minX = std::numeric_limits<double>::infinity(), minY = minX, maxX = -minX, maxY = -minX;
-    for (const glm::dvec2& p : v)
-    {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y))
-            return Shape::NonFinite;
-        minX = std::min(minX, p.x);
-        maxX = std::max(maxX, p.x);
-        minY = std::min(minY, p.y);
-        maxY = std::max(maxY, p.y);
-    }
-    setup.pixels = PixelRange{};
-    if (v.empty())
-        return Shape::Degenerate; // touches nothing
-    PixelRange& r = setup.pixels;
-    if (!grownSpan(minX, maxX, shrink, mask.width(), r.x0, r.x1) ||
-        !grownSpan(minY, maxY, shrink, mask.height(), r.y0, r.y1))
-        r = PixelRange{};
-
-    const DepthPlane& plane = polygon.depth;
-    const std::size_t n = v.size();
-    if (n < 3 || n > MaxEdges || !std::isfinite(plane.a) || !std::isfinite(plane.b) || !std::isfinite(plane.c))
-        return Shape::Degenerate;
-    const double size = std::max(maxX - minX, maxY - minY);
-    double twiceArea = 0.0;
-    for (std::size_t i = 1; i + 1 < n; ++i)
-    {
-        const glm::dvec2 a = v[i] - v[0], b = v[i + 1] - v[0];
-        twiceArea += a.x * b.y - a.y * b.x;
-    }
-    if (!(std::abs(twiceArea) > RelativeTolerance * size * size))
-        return Shape::Degenerate;
-    const double orientation = twiceArea > 0.0 ? 1.0 : -1.0;
-
-    // Convex = every turn the same way (collinear allowed, reversals not) and the direction sweeps
-    // round once (its x and y components change sign at most twice each), which rules out stars.
-    const double h = 0.5 + shrink;
-    std::size_t count = 0;
-    std::array<glm::dvec2, MaxEdges> direction;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        const glm::dvec2 d = v[(i + 1) % n] - v[i];
-        const double length = std::sqrt(d.x * d.x + d.y * d.y);
-        if (!(length > RelativeTolerance * size))
-            continue; // a repeated vertex bounds nothing
-        const double nx = -orientation * d.y / length, ny = orientation * d.x / length;
-        direction[count] = d / length;
-        setup.nx[count] = nx;
-        setup.ny[count] = ny;
-        setup.offset[count] = -(nx * v[i].x + ny * v[i].y);
-        setup.reach[count] = (std::abs(nx) + std::abs(ny)) * h;
-        setup.outline[count] = !(i < polygon.sharedEdge.size() && polygon.sharedEdge[i]);
-        setup.slope[count] = float(nx);
-        setup.reachF[count] = float(setup.reach[count]);
-        setup.insideLimit[count] = setup.outline[count] ? setup.reachF[count] : -InfiniteDepth;
-        ++count;
-    }
-    if (count < 3)
-        return Shape::Degenerate;
-    int xSignChanges = 0, ySignChanges = 0;
-    double lastX = 0.0, lastY = 0.0;
-    for (std::size_t i = 0; i < 2 * count; ++i) // twice round, counting the changes of the second lap
-    {
-        const glm::dvec2 a = direction[i % count], b = direction[(i + 1) % count];
-        const double turn = a.x * b.y - a.y * b.x;
-        if (turn * orientation < -RelativeTolerance ||
-            (std::abs(turn) <= RelativeTolerance && a.x * b.x + a.y * b.y < 0.0))
-            return Shape::Degenerate;
-        const bool counted = i >= count;
-        if (std::abs(a.x) > 1e-9)
-        {
-            xSignChanges += counted && lastX * a.x < 0.0;
-            lastX = a.x;
-        }
-        if (std::abs(a.y) > 1e-9)
-        {
-            ySignChanges += counted && lastY * a.y < 0.0;
-            lastY = a.y;
-        }
-    }
-    if (xSignChanges > 2 || ySignChanges > 2)
-        return Shape::Degenerate;
-    setup.edgeCount = count;
-
-    setup.inverse = plane.inverse;
-    setup.da = plane.a;
-    setup.db = plane.b;
-    const double cornerSpread = (std::abs(plane.a) + std::abs(plane.b)) * h;
-    setup.dc = plane.inverse ? plane.c - cornerSpread : plane.c + cornerSpread;
-    setup.depthSlope = float(plane.a);
-    setup.depthSlopeReach = float(Lanes) * std::abs(setup.depthSlope);
-    // Covers the double evaluation's own rounding (terms up to the largest coordinates reached).
-    const double reachX = std::max(std::abs(minX), std::abs(maxX)) + 1.0 + shrink;
-    const double reachY = std::max(std::abs(minY), std::abs(maxY)) + 1.0 + shrink;
-    const double extent = std::max(reachX, double(mask.width())) * std::abs(plane.a) +
-                          std::max(reachY, double(mask.height())) * std::abs(plane.b) + std::abs(plane.c) +
-                          cornerSpread;
-    setup.depthAbsMargin = float(extent * 1e-12);
-    return Shape::Convex;
-}
-
-// One block of 4 pixels of a row, for one polygon: f0 per edge and v0 are the lane-0 values.
-struct BlockInput
-{
-    const float* f0;
-    const PolygonSetup* polygon;
-    float v0;
-};
-
-struct BlockResult
-{
-    int touched = 0, outside = 0, ambiguous = 0; // lane bit masks
-    alignas(16) float depth[Lanes];
-};
-
-void scalarBlock(const BlockInput& in, BlockResult& out)
-{
-    const PolygonSetup& s = *in.polygon;
-    bool touched[Lanes] = {true, true, true, true};
-    bool outside[Lanes] = {}, ambiguous[Lanes] = {};
+    double low = s.pixels.x0, high = s.pixels.x1;
     for (std::size_t e = 0; e < s.edgeCount; ++e)
     {
-        const float negativeReach = -s.reachF[e];
-        for (int j = 0; j < Lanes; ++j)
-        {
-            const float f = in.f0[e] + s.slope[e] * float(j);
-            touched[j] = touched[j] && f >= negativeReach;
-            outside[j] = outside[j] || f < s.insideLimit[e];
-            ambiguous[j] = ambiguous[j] || std::fabs(std::fabs(f) - s.reachF[e]) < Ambiguity;
-        }
-    }
-    out = BlockResult{};
-    for (int j = 0; j < Lanes; ++j)
-    {
-        out.touched |= int(touched[j]) << j;
-        out.outside |= int(outside[j]) << j;
-        out.ambiguous |= int(ambiguous[j]) << j;
-        const float value = in.v0 + s.depthSlope * float(j);
-        const float margin = (std::fabs(value) + s.depthSlopeReach) * DepthRelativeMargin + s.depthAbsMargin;
-        if (s.inverse)
-        {
-            const float w = value - margin;
-            out.depth[j] = w > 0.0f ? 1.0f / w : InfiniteDepth;
-        }
-        else
-            out.depth[j] = value + margin;
-    }
-}
-
-#ifdef __SSE2__
-// The same operations as scalarBlock, four lanes at once (IEEE single precision either way).
-void simdBlock(const BlockInput& in, BlockResult& out)
-{
-    const PolygonSetup& s = *in.polygon;
-    const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
-    const __m128 sign = _mm_set1_ps(-0.0f);
-    const __m128 ambiguity = _mm_set1_ps(Ambiguity);
-    __m128 touched = _mm_castsi128_ps(_mm_set1_epi32(-1));
-    __m128 outside = _mm_setzero_ps(), ambiguous = _mm_setzero_ps();
-    for (std::size_t e = 0; e < s.edgeCount; ++e)
-    {
-        const __m128 reach = _mm_set1_ps(s.reachF[e]);
-        const __m128 f = _mm_add_ps(_mm_set1_ps(in.f0[e]), _mm_mul_ps(_mm_set1_ps(s.slope[e]), lanes));
-        touched = _mm_and_ps(touched, _mm_cmpge_ps(f, _mm_set1_ps(-s.reachF[e])));
-        outside = _mm_or_ps(outside, _mm_cmplt_ps(f, _mm_set1_ps(s.insideLimit[e])));
-        const __m128 distance = _mm_sub_ps(_mm_andnot_ps(sign, f), reach);
-        ambiguous = _mm_or_ps(ambiguous, _mm_cmplt_ps(_mm_andnot_ps(sign, distance), ambiguity));
-    }
-    out.touched = _mm_movemask_ps(touched);
-    out.outside = _mm_movemask_ps(outside);
-    out.ambiguous = _mm_movemask_ps(ambiguous);
-    const __m128 value = _mm_add_ps(_mm_set1_ps(in.v0), _mm_mul_ps(_mm_set1_ps(s.depthSlope), lanes));
-    const __m128 margin = _mm_add_ps(_mm_mul_ps(_mm_add_ps(_mm_andnot_ps(sign, value), _mm_set1_ps(s.depthSlopeReach)),
-                                                _mm_set1_ps(DepthRelativeMargin)),
-                                     _mm_set1_ps(s.depthAbsMargin));
-    __m128 depth;
-    if (s.inverse)
-    {
-        const __m128 w = _mm_sub_ps(value, margin);
-        const __m128 positive = _mm_cmpgt_ps(w, _mm_setzero_ps());
-        depth = _mm_or_ps(_mm_and_ps(positive, _mm_div_ps(_mm_set1_ps(1.0f), w)),
-                          _mm_andnot_ps(positive, _mm_set1_ps(InfiniteDepth)));
-    }
-    else
-        depth = _mm_add_ps(value, margin);
-    _mm_store_ps(out.depth, depth);
-}
-#endif
-
-// Region of the group: scratch buffers cover it, row-major.
-struct GroupBuffers
-{
-    PixelRange region;
-    std::size_t stride = 0;
-    std::uint8_t* state = nullptr;
-    float* depth = nullptr;
-    std::size_t index(int x, int y) const { return std::size_t(y - region.y0) * stride + std::size_t(x - region.x0); }
-};
-
-void vetoRange(const PixelRange& pixels, GroupBuffers& buffers)
-{
-    for (int y = pixels.y0; y <= pixels.y1; ++y)
-        for (int x = pixels.x0; x <= pixels.x1; ++x)
-            buffers.state[buffers.index(x, y)] |= Vetoed;
-}
-
-void rasterizePolygon(const PolygonSetup& s, bool simd, GroupBuffers& buffers)
-{
-    std::array<double, MaxEdges> rowF;
-    alignas(16) std::array<float, MaxEdges> f0;
-    const PixelRange& p = s.pixels;
-    const double firstCentreX = p.x0 + 0.5;
-    for (int y = p.y0; y <= p.y1; ++y)
-    {
-        const double cy = y + 0.5;
-        for (std::size_t e = 0; e < s.edgeCount; ++e)
-            rowF[e] = s.nx[e] * firstCentreX + s.ny[e] * cy + s.offset[e];
-        const double rowV = s.da * firstCentreX + s.db * cy + s.dc;
-        // Only the row's stretch between the edges can touch: f_e(cx) ≥ -reach_e bounds cx on
-        // one side for each edge not parallel to the row. One pixel of slack absorbs rounding
-        // (the lanes still test every pixel they visit).
-        double lowX = p.x0, highX = p.x1;
-        for (std::size_t e = 0; e < s.edgeCount; ++e)
-        {
-            if (std::abs(s.nx[e]) < 1e-6)
-                continue;
-            const double bound = (-s.reach[e] - s.ny[e] * cy - s.offset[e]) / s.nx[e] - 0.5; // pixel x of cx
-            if (s.nx[e] > 0.0)
-                lowX = std::max(lowX, std::floor(bound) - 1.0);
-            else
-                highX = std::min(highX, std::ceil(bound) + 1.0);
-        }
-        if (!(lowX <= highX))
+        if (std::abs(s.nx[e]) < 1e-6)
             continue;
-        const int spanStart = p.x0 + (int(lowX) - p.x0) / Lanes * Lanes; // stays on the polygon's lane grid
-        const int spanEnd = int(highX);
-        for (int x = spanStart; x <= spanEnd; x += Lanes)
+        const double nyCy = std::max(s.ny[e] * (y0 + 0.5), s.ny[e] * (y1 + 0.5));
+        const double x = (-s.reach[e] - nyCy - s.offset[e]) / s.nx[e] - 0.5; // pixel x at the boundary
+        if (s.nx[e] > 0.0)
+            low = std::max(low, std::floor(x) - 1.0);
+        else
+            high = std::min(high, std::ceil(x) + 1.0);
+    }
+    if (!(low <= high))
+        return false;
+    first = int(low) / TileSize;
+    last = int(high) / TileSize;
+    return true;
+}
+
+// Tile columns of tile row `ty` (pixel rows y0..y1 inside the mask) whose every pixel lies inside
+// every edge of the polygon (outline edges: f ≥ reach at every pixel centre of the whole 8 × 8 tile;
+// shared edges: f ≥ -reach), with a margin of 1e-4 px over the rounding of this division. Such a
+// tile needs no classification: each of its pixels touches the polygon and is beyond none of its
+// outline edges, exactly as the reference decides (each decision clears its threshold by the margin).
+void insideSpan(const PolygonSetup& s, int y0, int y1, int& first, int& last)
+{
+    constexpr double Margin = 1e-4;
+    double low = -1.0, high = 1e9;
+    for (std::size_t e = 0; e < s.edgeCount && low <= high; ++e)
+    {
+        const double threshold = (s.outline[e] ? s.reach[e] : -s.reach[e]) + Margin;
+        const double rest = threshold - std::min(s.ny[e] * (y0 + 0.5), s.ny[e] * (y1 + 0.5)) - s.offset[e];
+        if (s.nx[e] == 0.0) // need 0 ≥ rest whatever the column
+            high = rest <= 0.0 ? high : -2.0;
+        else if (s.nx[e] > 0.0) // the tile's leftmost centre 8tx + 0.5 decides
+            low = std::max(low, std::ceil((rest / s.nx[e] - 0.5) / TileSize));
+        else // the rightmost centre 8tx + 7.5
+            high = std::min(high, std::floor((rest / s.nx[e] - 7.5) / TileSize));
+    }
+    if (!(low <= high)) // NaN included
+    {
+        first = 0;
+        last = -1;
+        return;
+    }
+    first = int(std::max(low, -1.0));
+    last = int(std::min(high, 1e9));
+}
+
+// What a group has put into one tile so far. While one polygon alone gives depths, its plane is
+// kept instead of depths (merged on the way into the mask); a second one fills `depth`.
+struct TileWork
+{
+    std::uint64_t touched = 0, vetoed = 0;
+    int contributors = 0;
+    TileDepth first;
+    std::uint64_t firstLanes = 0;
+    alignas(32) float depth[TileSize * TileSize];
+    TileEdges edges;
+};
+
+// One convex polygon over one tile: adds what it touches and vetoes, and its depths where it may
+// count. `tileRange` is the tile's pixels inside the mask; `inside`: all of them lie inside the
+// polygon (insideSpan), so no edge needs classifying.
+void polygonInTile(const TileKernels& kernels, const PolygonSetup& s, const PixelRange& tileRange, int tx, int ty,
+                   bool inside, TileWork& work)
+{
+    const PixelRange r = intersect(tileRange, s.pixels);
+    const int ox = tx * TileSize, oy = ty * TileSize;
+    const std::uint64_t range = rectBits(r.x0 - ox, r.x1 - ox, r.y0 - oy, r.y1 - oy);
+    const double cx = r.x0 + 0.5, cy = r.y0 + 0.5, wx = r.x1 - r.x0, wy = r.y1 - r.y0;
+    const double tileCx = ox + 0.5, tileCy = oy + 0.5;
+    bool allOutside = false;
+    TileEdges& edges = work.edges;
+    edges.count = 0;
+    for (std::size_t e = 0; e < (inside ? 0 : s.edgeCount); ++e)
+    {
+        // The edge function over the range's pixel centres is extreme at its corners.
+        const double f = s.nx[e] * cx + s.ny[e] * cy + s.offset[e];
+        const double low = f + std::min(0.0, s.nx[e] * wx) + std::min(0.0, s.ny[e] * wy);
+        const double high = f + std::max(0.0, s.nx[e] * wx) + std::max(0.0, s.ny[e] * wy);
+        if (high < -s.reach[e] - ClassifyMargin)
+            return; // no grown square of the range touches the polygon
+        const bool touchesAll = low >= -s.reach[e] + ClassifyMargin;
+        const bool insideAll = !s.outline[e] || low >= s.reach[e] + ClassifyMargin;
+        const bool outsideAll = s.outline[e] && high < s.reach[e] - ClassifyMargin;
+        if (touchesAll && (insideAll || outsideAll))
         {
-            const double dx = x - p.x0;
-            for (std::size_t e = 0; e < s.edgeCount; ++e)
-                f0[e] = float(rowF[e] + s.nx[e] * dx);
-            const BlockInput in{f0.data(), &s, float(rowV + s.da * dx)};
-            BlockResult result;
-#ifdef __SSE2__
-            if (simd)
-                simdBlock(in, result);
-            else
-#endif
-                scalarBlock(in, result);
-            const int lanes = std::min(Lanes, p.x1 - x + 1);
-            const int valid = (1 << lanes) - 1;
-            int touched = result.touched & valid;
-            int outside = result.outside;
-            const int ambiguous = result.ambiguous & valid;
-            if (ambiguous != 0)
-            {
-                for (int j = 0; j < lanes; ++j)
-                {
-                    if (!(ambiguous >> j & 1))
-                        continue;
-                    const double cx = x + j + 0.5;
-                    bool laneTouched = true, laneOutside = false;
-                    for (std::size_t e = 0; e < s.edgeCount; ++e)
-                    {
-                        const double f = s.nx[e] * cx + s.ny[e] * cy + s.offset[e];
-                        laneTouched = laneTouched && f >= -s.reach[e];
-                        laneOutside = laneOutside || (s.outline[e] && f < s.reach[e]);
-                    }
-                    touched = (touched & ~(1 << j)) | int(laneTouched) << j;
-                    outside = (outside & ~(1 << j)) | int(laneOutside) << j;
-                }
-            }
-            if (touched == 0)
-                continue;
-            const std::size_t row = buffers.index(x, y);
-            for (int j = 0; j < lanes; ++j)
-            {
-                if (!(touched >> j & 1))
-                    continue;
-                buffers.state[row + j] |= Touched | (outside >> j & 1 ? Vetoed : 0);
-                buffers.depth[row + j] = std::max(buffers.depth[row + j], result.depth[j]);
-            }
+            allOutside = allOutside || outsideAll;
+            continue;
+        }
+        const std::size_t k = edges.count++;
+        edges.f0[k] = float(s.nx[e] * tileCx + s.ny[e] * tileCy + s.offset[e]);
+        edges.nx[k] = s.slope[e];
+        edges.ny[k] = s.slopeY[e];
+        edges.reach[k] = s.reachF[e];
+        edges.insideLimit[k] = s.insideLimit[e];
+    }
+    std::uint64_t touched = range, outside = allOutside ? range : 0;
+    if (edges.count != 0)
+    {
+        TileCoverage c;
+        kernels.coverage(edges, r.y0 - oy, r.y1 - oy + 1, c);
+        touched = c.touched & range;
+        outside = allOutside ? range : c.outside;
+        for (std::uint64_t pending = c.ambiguous & range; pending != 0; pending &= pending - 1)
+        {
+            const int lane = __builtin_ctzll(pending);
+            bool laneTouched = false, laneOutside = false;
+            decidePixel(s, ox + lane % TileSize, oy + lane / TileSize, laneTouched, laneOutside);
+            const std::uint64_t bit = std::uint64_t(1) << lane;
+            touched = laneTouched ? touched | bit : touched & ~bit;
+            outside = laneOutside ? outside | bit : outside & ~bit;
         }
     }
-}
-} // namespace
-
-double DepthPlane::maxOverSquare(double x0, double y0, double x1, double y1) const
-{
-    const double corners[4] = {a * x0 + b * y0 + c, a * x1 + b * y0 + c, a * x0 + b * y1 + c, a * x1 + b * y1 + c};
-    const double infinity = std::numeric_limits<double>::infinity();
-    if (inverse)
+    work.touched |= touched;
+    work.vetoed |= touched & outside;
+    const std::uint64_t counts = touched & ~work.vetoed;
+    if (counts == 0)
+        return;
+    TileDepth plane;
+    plane.v0 = float(s.da * tileCx + s.db * tileCy + s.dc);
+    plane.da = s.depthSlope;
+    plane.db = s.depthSlopeY;
+    plane.spread = float(TileSize) * (std::fabs(s.depthSlope) + std::fabs(s.depthSlopeY));
+    plane.absMargin = 2.0f * s.depthAbsMargin;
+    plane.inverse = s.inverse;
+    if (work.contributors++ == 0)
     {
-        const double smallest = *std::min_element(corners, corners + 4);
-        return smallest > 0.0 ? 1.0 / smallest : infinity; // NaN: +inf too
+        work.first = plane;
+        work.firstLanes = counts;
+        return;
     }
-    const double largest = *std::max_element(corners, corners + 4);
-    return std::isnan(largest) ? infinity : largest;
+    if (work.contributors == 2)
+    {
+        std::fill(work.depth, work.depth + TileSize * TileSize, -InfiniteDepth);
+        kernels.depthMax(work.first, 0, TileSize, work.firstLanes, work.depth);
+    }
+    kernels.depthMax(plane, r.y0 - oy, r.y1 - oy + 1, counts, work.depth);
 }
 
-bool maskRasterHasSimd()
+// Writes the covered lanes of a tile into the mask and refreshes the tile's bound. Tiles that reach
+// beyond the mask go through a padded copy (-inf beyond: it never raises the bound).
+std::size_t mergeTile(const TileKernels& kernels, OcclusionMask& mask, int tx, int ty, const PixelRange& tileRange,
+                      std::uint64_t covered, const TileWork& work)
 {
-#ifdef __SSE2__
-    return true;
+    const int ox = tx * TileSize, oy = ty * TileSize;
+    float* rows[TileSize];
+    alignas(32) float padded[TileSize * TileSize];
+    const bool whole = tileRange.x1 - ox == TileSize - 1 && tileRange.y1 - oy == TileSize - 1;
+    const int width = tileRange.x1 - ox + 1, height = tileRange.y1 - oy + 1;
+    float* const first = mask.nearerRow(std::uint32_t(oy)) + ox; // rows are mask.width() apart
+    const std::size_t stride = mask.width();
+    for (int r = 0; r < TileSize; ++r)
+    {
+        if (whole)
+        {
+            rows[r] = first + r * stride;
+            continue;
+        }
+        rows[r] = padded + TileSize * r;
+        std::fill(rows[r], rows[r] + TileSize, -InfiniteDepth);
+        if (r < height)
+            std::copy_n(first + r * stride, width, rows[r]);
+    }
+    std::size_t count = 0;
+    // note: with one contributor every covered lane is one of its lanes (a covered pixel's touching
+    // polygons all gave depths there), so its plane stands for the maximum.
+    const float largest = work.contributors == 1 ? kernels.planeMerge(rows, covered, work.first, count)
+                                                 : kernels.merge(rows, covered, work.depth, count);
+    if (!whole)
+        for (int r = 0; r < height; ++r)
+            std::copy_n(rows[r], width, first + r * stride);
+    mask.setTileBound(std::uint32_t(tx), std::uint32_t(ty), largest);
+    return count;
+}
+
+bool cpuHasAvx2()
+{
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    return __builtin_cpu_supports("avx2");
 #else
     return false;
 #endif
 }
 
-std::size_t rasterizeOccluderGroupWith(MaskRasterPath path, OcclusionMask& mask, const ScreenPolygon* polygons,
-                                       std::size_t count, double shrink, MaskRasterScratch& scratch)
+const TileKernels& kernelsFor(MaskTileKernel kernel)
 {
-    if (count == 0 || mask.width() == 0 || mask.height() == 0 || !std::isfinite(shrink))
-        return 0;
-    shrink = std::max(shrink, 0.0); // a negative shrink would grow the union: never conservative
+    const TileKernels* avx2 =
+        kernel == MaskTileKernel::Avx2 && maskTileKernelAvailable(kernel) ? avx2TileKernels() : nullptr;
+    return avx2 ? *avx2 : sse2TileKernels();
+}
+} // namespace
 
-    // Bounding region of the group's grown polygons; any non-finite polygon spoils the group.
+bool maskTileKernelAvailable(MaskTileKernel kernel)
+{
+    // The AVX2 kernels exist where the compiler could build them; they run where the CPU says so.
+    static const bool avx2 = avx2TileKernels() != nullptr && cpuHasAvx2();
+    return kernel == MaskTileKernel::Sse2 || avx2;
+}
+
+std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& mask, const ScreenPolygon* polygons,
+                                        std::size_t count, double shrink, MaskRasterScratch& scratch)
+{
+    if (!prepareGroup(count, mask, shrink))
+        return 0;
+    if (!scratch.tiles)
+        scratch.tiles = std::make_unique<MaskRasterScratch::Tiles>();
+    std::vector<PolygonSetup>& setups = scratch.tiles->setups;
+    std::vector<Shape>& shapes = scratch.tiles->shapes;
+    if (setups.size() < count)
+        setups.resize(count);
+    shapes.resize(count);
+
     PixelRange region{int(mask.width()), int(mask.height()), -1, -1};
-    PolygonSetup setup;
     for (std::size_t i = 0; i < count; ++i)
     {
-        if (setupPolygon(polygons[i], shrink, mask, setup) == Shape::NonFinite)
-            return 0;
-        if (setup.pixels.empty())
-            continue;
-        region.x0 = std::min(region.x0, setup.pixels.x0);
-        region.y0 = std::min(region.y0, setup.pixels.y0);
-        region.x1 = std::max(region.x1, setup.pixels.x1);
-        region.y1 = std::max(region.y1, setup.pixels.y1);
+        shapes[i] = setupPolygon(polygons[i], shrink, mask, setups[i]);
+        if (shapes[i] == Shape::NonFinite)
+            return 0; // any non-finite polygon spoils the group
+        unite(region, setups[i].pixels);
     }
     if (region.empty())
         return 0;
 
-    GroupBuffers buffers;
-    buffers.region = region;
-    buffers.stride = std::size_t(region.x1 - region.x0 + 1);
-    const std::size_t pixelCount = buffers.stride * std::size_t(region.y1 - region.y0 + 1);
-    scratch.state.assign(pixelCount, 0);
-    scratch.depth.assign(pixelCount, -InfiniteDepth);
-    buffers.state = scratch.state.data();
-    buffers.depth = scratch.depth.data();
-
-    const bool simd = path == MaskRasterPath::Simd;
+    const TileKernels& kernels = kernelsFor(kernel);
+    // Every depth a polygon writes is at least its smallest depth over its pixel range; where the
+    // mask already holds nothing farther, nothing would change (min keeps the stored depth).
+    std::vector<float>& nearest = scratch.tiles->nearest;
+    nearest.assign(count, InfiniteDepth);
+    float groupNearest = InfiniteDepth;
     for (std::size_t i = 0; i < count; ++i)
-    {
-        const Shape shape = setupPolygon(polygons[i], shrink, mask, setup);
-        if (setup.pixels.empty())
-            continue;
-        if (shape == Shape::Convex)
-            rasterizePolygon(setup, simd, buffers);
-        else
-            vetoRange(setup.pixels, buffers);
-    }
-
-    std::size_t covered = 0;
-    for (int y = region.y0; y <= region.y1; ++y)
-        for (int x = region.x0; x <= region.x1; ++x)
+        if (shapes[i] == Shape::Convex && !setups[i].pixels.empty())
         {
-            const std::size_t i = buffers.index(x, y);
-            // An infinite depth (the plane reaches the horizon over the pixel) hides nothing.
-            if (buffers.state[i] == Touched && buffers.depth[i] < InfiniteDepth)
+            nearest[i] = smallestDepth(setups[i], setups[i].pixels, shrink);
+            groupNearest = std::min(groupNearest, nearest[i]);
+        }
+    // The whole group at once, by blocks of tiles (front-to-back occluders behind the mask so far).
+    const int blocks = int(TileSize * OcclusionMask::BlockTiles);
+    float regionBound = -InfiniteDepth;
+    for (int by = region.y0 / blocks; by <= region.y1 / blocks && !(groupNearest < regionBound); ++by)
+        for (int bx = region.x0 / blocks; bx <= region.x1 / blocks; ++bx)
+            regionBound = std::max(regionBound, mask.blockBound(std::uint32_t(bx), std::uint32_t(by)));
+    if (!(groupNearest < regionBound))
+        return 0;
+    // Per polygon, for the current tile row: the first and last tile column it may touch, and the
+    // first and last wholly inside it.
+    std::vector<int>& spans = scratch.tiles->spans;
+    spans.resize(4 * count);
+    const PixelRange maskRange{0, 0, int(mask.width()) - 1, int(mask.height()) - 1};
+    TileWork work;
+    std::size_t covered = 0;
+    for (int ty = region.y0 / TileSize; ty <= region.y1 / TileSize; ++ty)
+    {
+        int rowFirst = std::numeric_limits<int>::max(), rowLast = -1;
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            int& first = spans[4 * i];
+            int& last = spans[4 * i + 1];
+            spans[4 * i + 2] = 0;
+            spans[4 * i + 3] = -1;
+            const PixelRange& p = setups[i].pixels;
+            if (shapes[i] == Shape::Convex ? !tileSpan(setups[i], ty, first, last)
+                                           : p.empty() || p.y1 < ty * TileSize || p.y0 >= (ty + 1) * TileSize)
             {
-                mask.cover(std::uint32_t(x), std::uint32_t(y), buffers.depth[i]);
-                ++covered;
+                first = 0;
+                last = -1;
+                continue;
+            }
+            if (shapes[i] != Shape::Convex)
+            {
+                first = p.x0 / TileSize;
+                last = p.x1 / TileSize;
+            }
+            else
+            {
+                rowFirst = std::min(rowFirst, first);
+                rowLast = std::max(rowLast, last);
+                insideSpan(setups[i], ty * TileSize, std::min(ty * TileSize + TileSize, int(mask.height())) - 1,
+                           spans[4 * i + 2], spans[4 * i + 3]);
             }
         }
+        for (int tx = rowFirst; tx <= rowLast; ++tx)
+        {
+            const int blockTiles = int(OcclusionMask::BlockTiles);
+            if ((tx == rowFirst || tx % blockTiles == 0) &&
+                !(groupNearest < mask.blockBound(std::uint32_t(tx / blockTiles), std::uint32_t(ty / blockTiles))))
+            {
+                tx = (tx / blockTiles + 1) * blockTiles - 1; // the rest of the block
+                continue;
+            }
+            const float bound = mask.tileBound(std::uint32_t(tx), std::uint32_t(ty));
+            if (!(groupNearest < bound))
+                continue;
+            const PixelRange tile =
+                intersect(maskRange, PixelRange{tx * TileSize, ty * TileSize, tx * TileSize + TileSize - 1,
+                                                ty * TileSize + TileSize - 1});
+            if (count > 1)
+            {
+                // The tighter test over the tile alone, for groups whose polygons lie at different depths.
+                float tileNearest = InfiniteDepth;
+                for (std::size_t i = 0; i < count; ++i)
+                    if (shapes[i] == Shape::Convex && spans[4 * i] <= tx && tx <= spans[4 * i + 1])
+                        tileNearest = std::min(tileNearest, nearest[i]);
+                if (!(tileNearest < bound))
+                    continue;
+            }
+            work.touched = work.vetoed = 0;
+            work.contributors = 0;
+            for (std::size_t i = 0; i < count; ++i)
+            {
+                if (tx < spans[4 * i] || tx > spans[4 * i + 1])
+                    continue;
+                const PixelRange r = intersect(tile, setups[i].pixels);
+                if (r.empty())
+                    continue;
+                if (shapes[i] == Shape::Convex)
+                    polygonInTile(kernels, setups[i], tile, tx, ty, spans[4 * i + 2] <= tx && tx <= spans[4 * i + 3],
+                                  work);
+                else // degenerate: vetoes what it touches
+                    work.vetoed |= rectBits(r.x0 - tx * TileSize, r.x1 - tx * TileSize, r.y0 - ty * TileSize,
+                                            r.y1 - ty * TileSize);
+            }
+            const std::uint64_t lanes = work.touched & ~work.vetoed;
+            if (lanes != 0)
+                covered += mergeTile(kernels, mask, tx, ty, tile, lanes, work);
+        }
+    }
     return covered;
 }
 
 std::size_t rasterizeOccluderGroup(OcclusionMask& mask, const ScreenPolygon* polygons, std::size_t count, double shrink,
                                    MaskRasterScratch& scratch)
 {
-    return rasterizeOccluderGroupWith(MaskRasterPath::Simd, mask, polygons, count, shrink, scratch);
+    return rasterizeOccluderGroupTiled(MaskTileKernel::Avx2, mask, polygons, count, shrink, scratch);
 }
 } // namespace osgVis::core

@@ -7,6 +7,10 @@
 #include <cmath>
 #include <limits>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 namespace osgVis::core
 {
 namespace
@@ -57,18 +61,79 @@ void windowMax(const float* in, float* out, std::size_t count, std::size_t itemS
     }
     std::fill(out + (count - radius) * itemSize, out + count * itemSize, Uncovered);
 }
+
+// out[x] = max(row0[2x], row0[2x+1], row1[2x], row1[2x+1]) for x < count: the 2 × 2 max of a
+// pyramid level where all four children exist.
+void halveRows(const float* row0, const float* row1, float* out, std::uint32_t count)
+{
+    std::uint32_t x = 0;
+#ifdef __SSE2__
+    for (; x + 4 <= count; x += 4)
+    {
+        const __m128 a = _mm_max_ps(_mm_loadu_ps(row0 + 2 * x), _mm_loadu_ps(row1 + 2 * x));
+        const __m128 b = _mm_max_ps(_mm_loadu_ps(row0 + 2 * x + 4), _mm_loadu_ps(row1 + 2 * x + 4));
+        _mm_storeu_ps(out + x, _mm_max_ps(_mm_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 2, 0)),
+                                          _mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1))));
+    }
+#endif
+    for (; x < count; ++x)
+        out[x] = std::max(std::max(row0[2 * x], row0[2 * x + 1]), std::max(row1[2 * x], row1[2 * x + 1]));
+}
 } // namespace
 
 void OcclusionMask::reset(std::uint32_t width, std::uint32_t height)
 {
+    dropPyramid();
     _width = width;
     _height = height;
     _base.assign(std::size_t(width) * height, Uncovered);
-    dropPyramid();
+    _tileBound.assign(std::size_t(tileColumns()) * tileRows(), Uncovered);
+    _blockBound.assign(std::size_t(blockColumns()) * blockRows(), Uncovered);
+}
+
+void OcclusionMask::setTileBound(std::uint32_t tx, std::uint32_t ty, float largestDepth)
+{
+    float& tile = _tileBound[std::size_t(ty) * tileColumns() + tx];
+    const float block = blockBound(tx / BlockTiles, ty / BlockTiles);
+    const bool wasLargest = !(tile < block);
+    tile = largestDepth;
+    // A block's bound changes only when this tile held its largest value or now exceeds it.
+    if (wasLargest || !(largestDepth <= block))
+        recomputeBlockBound(tx / BlockTiles, ty / BlockTiles);
+}
+
+void OcclusionMask::recomputeBlockBound(std::uint32_t bx, std::uint32_t by)
+{
+    const std::uint32_t columns = tileColumns();
+    const std::uint32_t x0 = bx * BlockTiles, x1 = std::min(x0 + BlockTiles, columns);
+    const std::uint32_t y0 = by * BlockTiles, y1 = std::min(y0 + BlockTiles, tileRows());
+    float largest = -Uncovered;
+    for (std::uint32_t y = y0; y < y1; ++y)
+        for (std::uint32_t x = x0; x < x1; ++x)
+            largest = std::max(largest, _tileBound[std::size_t(y) * columns + x]);
+    _blockBound[std::size_t(by) * blockColumns() + bx] = largest;
+}
+
+void OcclusionMask::recomputeTileBounds()
+{
+    std::fill(_tileBound.begin(), _tileBound.end(), -Uncovered);
+    const std::uint32_t columns = tileColumns();
+    for (std::uint32_t y = 0; y < _height; ++y)
+    {
+        float* bound = _tileBound.data() + std::size_t(y / TileSize) * columns;
+        const float* row = _base.data() + std::size_t(y) * _width;
+        for (std::uint32_t x = 0; x < _width; ++x)
+            bound[x / TileSize] = std::max(bound[x / TileSize], row[x]);
+    }
+    for (std::uint32_t by = 0; by < blockRows(); ++by)
+        for (std::uint32_t bx = 0; bx < blockColumns(); ++bx)
+            recomputeBlockBound(bx, by);
 }
 
 void OcclusionMask::dropPyramid()
 {
+    if (!_levels.empty())
+        std::swap(_base, _levels[0]); // level 0 holds the mask while the pyramid stands
     for (std::vector<float>& level : _levels)
         _spareLevels.push_back(std::move(level));
     _levels.clear();
@@ -87,7 +152,8 @@ void OcclusionMask::cover(std::uint32_t x, std::uint32_t y, float depth)
 
 std::size_t OcclusionMask::coveredPixels() const
 {
-    return std::size_t(std::count_if(_base.begin(), _base.end(), [](float depth) { return depth < Uncovered; }));
+    const std::vector<float>& base = levelZero();
+    return std::size_t(std::count_if(base.begin(), base.end(), [](float depth) { return depth < Uncovered; }));
 }
 
 void OcclusionMask::shrinkUnion(std::uint32_t pixels)
@@ -108,6 +174,7 @@ void OcclusionMask::shrinkUnion(std::uint32_t pixels)
         windowMax(_base.data() + row, rowsDone + row, _width, 1, pixels, g + row, h + row);
     }
     windowMax(rowsDone, _base.data(), _height, _width, pixels, g, h);
+    recomputeTileBounds(); // erosion makes depths farther
 }
 
 void OcclusionMask::buildPyramid()
@@ -127,8 +194,7 @@ void OcclusionMask::buildPyramid()
         _levels.back().resize(std::size_t(width) * height);
         return _levels.back();
     };
-    std::vector<float>& base = newLevel(_width, _height);
-    std::copy(_base.begin(), _base.end(), base.begin());
+    std::swap(newLevel(_width, _height), _base); // no copy: level 0 is the mask itself
     if (_width == 0 || _height == 0)
         return;
     while (_levelWidth.back() > 1 || _levelHeight.back() > 1)
@@ -139,19 +205,17 @@ void OcclusionMask::buildPyramid()
         const std::vector<float>& fine = _levels[_levels.size() - 2]; // valid: newLevel is done growing _levels
         for (std::uint32_t y = 0; y < height; ++y)
         {
-            const float* row0 = fine.data() + std::size_t(2 * y) * fineWidth;
-            // A missing child (odd size) is uncovered, so the texel is too.
-            const bool hasRow1 = 2 * y + 1 < fineHeight;
-            const float* row1 = hasRow1 ? row0 + fineWidth : nullptr;
             float* out = coarse.data() + std::size_t(y) * width;
-            for (std::uint32_t x = 0; x < width; ++x)
+            // A missing child (odd size) is uncovered, so the texel is too.
+            if (2 * y + 1 >= fineHeight)
             {
-                const std::uint32_t x0 = 2 * x, x1 = 2 * x + 1;
-                const bool hasColumn1 = x1 < fineWidth;
-                float value = hasColumn1 ? std::max(row0[x0], row0[x1]) : Uncovered;
-                value = hasRow1 ? std::max(value, hasColumn1 ? std::max(row1[x0], row1[x1]) : Uncovered) : Uncovered;
-                out[x] = value;
+                std::fill(out, out + width, Uncovered);
+                continue;
             }
+            const float* row0 = fine.data() + std::size_t(2 * y) * fineWidth;
+            halveRows(row0, row0 + fineWidth, out, fineWidth / 2);
+            if (fineWidth % 2 != 0)
+                out[width - 1] = Uncovered;
         }
     }
 }
@@ -163,7 +227,7 @@ bool OcclusionMask::texelHidden(std::size_t level, std::uint32_t tx, std::uint32
     // uncovered one being +inf). Otherwise one of its pixels (or a missing child beyond the mask)
     // is not nearer: decisive when the rectangle spans the texel's whole (unclipped) footprint,
     // else the children the rectangle overlaps decide.
-    if (_levels[level][std::size_t(ty) * _levelWidth[level] + tx] < nearestDepth)
+    if (texel(level, tx, ty) < nearestDepth)
         return true;
     if (level == 0)
         return false;
@@ -181,34 +245,104 @@ bool OcclusionMask::texelHidden(std::size_t level, std::uint32_t tx, std::uint32
     return true;
 }
 
-bool OcclusionMask::rectHidden(double x0, double y0, double x1, double y1, float nearestDepth) const
+bool OcclusionMask::rectPixels(double x0, double y0, double x1, double y1, float nearestDepth,
+                               std::uint32_t pixels[4]) const
 {
     // note: every comparison is written so that NaN makes it fail.
     if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= double(_width) && y1 <= double(_height) && x0 <= x1 && y0 <= y1))
         return false;
     if (_width == 0 || _height == 0 || std::isnan(nearestDepth))
         return false;
-    const std::uint32_t pixels[4] = {std::uint32_t(std::floor(x0)), std::uint32_t(std::floor(y0)),
-                                     std::min(std::uint32_t(std::floor(x1)), _width - 1),
-                                     std::min(std::uint32_t(std::floor(y1)), _height - 1)};
-    if (_levels.empty())
-    {
-        for (std::uint32_t y = pixels[1]; y <= pixels[3]; ++y)
-            for (std::uint32_t x = pixels[0]; x <= pixels[2]; ++x)
-                if (!(_base[std::size_t(y) * _width + x] < nearestDepth))
-                    return false;
+    pixels[0] = std::uint32_t(std::floor(x0));
+    pixels[1] = std::uint32_t(std::floor(y0));
+    pixels[2] = std::min(std::uint32_t(std::floor(x1)), _width - 1);
+    pixels[3] = std::min(std::uint32_t(std::floor(y1)), _height - 1);
+    return true;
+}
+
+bool OcclusionMask::scanHidden(const std::uint32_t pixels[4], float nearestDepth) const
+{
+    for (std::uint32_t y = pixels[1]; y <= pixels[3]; ++y)
+        for (std::uint32_t x = pixels[0]; x <= pixels[2]; ++x)
+            if (!(_base[std::size_t(y) * _width + x] < nearestDepth))
+                return false;
+    return true;
+}
+
+bool OcclusionMask::decidedWithoutPyramid(double x0, double y0, double x1, double y1, float nearestDepth,
+                                          std::uint32_t pixels[4], bool& hidden) const
+{
+    hidden = false;
+    if (!rectPixels(x0, y0, x1, y1, nearestDepth, pixels))
         return true;
-    }
-    // Finest level where the rectangle spans at most 2×2 texels: few reads, yet texels small
-    // enough to be decisive.
+    if (!_levels.empty())
+        return false;
+    hidden = scanHidden(pixels, nearestDepth);
+    return true;
+}
+
+std::size_t OcclusionMask::spanLevel(const std::uint32_t pixels[4]) const
+{
+    // Finest level where the rectangle spans at most 2×2 texels.
     std::size_t level = 0;
     while (level + 1 < _levels.size() &&
            ((pixels[2] >> level) - (pixels[0] >> level) > 1 || (pixels[3] >> level) - (pixels[1] >> level) > 1))
         ++level;
-    for (std::uint32_t ty = pixels[1] >> level; ty <= pixels[3] >> level; ++ty)
-        for (std::uint32_t tx = pixels[0] >> level; tx <= pixels[2] >> level; ++tx)
-            if (!texelHidden(level, tx, ty, pixels, nearestDepth))
-                return false;
-    return true;
+    return level;
+}
+
+bool OcclusionMask::rectHidden(double x0, double y0, double x1, double y1, float nearestDepth) const
+{
+    return query(x0, y0, x1, y1, nearestDepth, false);
+}
+
+bool OcclusionMask::rectHiddenReference(double x0, double y0, double x1, double y1, float nearestDepth) const
+{
+    return query(x0, y0, x1, y1, nearestDepth, true);
+}
+
+bool OcclusionMask::query(double x0, double y0, double x1, double y1, float nearestDepth, bool depthFirst) const
+{
+    std::uint32_t pixels[4];
+    bool answer = false;
+    if (decidedWithoutPyramid(x0, y0, x1, y1, nearestDepth, pixels, answer))
+        return answer;
+    const std::size_t coarse = spanLevel(pixels);
+    if (depthFirst) // the earlier order: each coarse texel refined in turn
+    {
+        for (std::uint32_t ty = pixels[1] >> coarse; ty <= pixels[3] >> coarse; ++ty)
+            for (std::uint32_t tx = pixels[0] >> coarse; tx <= pixels[2] >> coarse; ++tx)
+                if (!texelHidden(coarse, tx, ty, pixels, nearestDepth))
+                    return false;
+        return true;
+    }
+    // 1. At most 2×2 coarse texels: all nearer, hidden (the common answer, in four reads).
+    bool nearer = true;
+    for (std::uint32_t ty = pixels[1] >> coarse; nearer && ty <= pixels[3] >> coarse; ++ty)
+        for (std::uint32_t tx = pixels[0] >> coarse; nearer && tx <= pixels[2] >> coarse; ++tx)
+            nearer = texel(coarse, tx, ty) < nearestDepth;
+    if (nearer)
+        return true;
+    // 2. Two levels finer (at most 8×8 texels): a texel wholly inside the rectangle that is not
+    // nearer decides at once (visible), so those go first; the texels on its border that are not
+    // nearer are refined down to the pixels they share with the rectangle.
+    const std::size_t level = coarse >= 2 ? coarse - 2 : 0;
+    const std::uint32_t tx0 = pixels[0] >> level, tx1 = pixels[2] >> level;
+    const std::uint32_t ty0 = pixels[1] >> level, ty1 = pixels[3] >> level;
+    auto inside = [&](std::uint32_t t, int axis)
+    { return pixels[axis] <= (t << level) && ((std::uint64_t(t) + 1) << level) - 1 <= pixels[axis + 2]; };
+    auto pass = [&](bool wholly)
+    {
+        for (std::uint32_t ty = ty0; ty <= ty1; ++ty)
+            for (std::uint32_t tx = tx0; tx <= tx1; ++tx)
+            {
+                if ((inside(tx, 0) && inside(ty, 1)) != wholly)
+                    continue;
+                if (wholly ? !(texel(level, tx, ty) < nearestDepth) : !texelHidden(level, tx, ty, pixels, nearestDepth))
+                    return false;
+            }
+        return true;
+    };
+    return pass(true) && pass(false);
 }
 } // namespace osgVis::core

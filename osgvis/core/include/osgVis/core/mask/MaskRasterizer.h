@@ -20,6 +20,7 @@
 #include <glm/vec2.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace osgVis::core
@@ -42,16 +43,30 @@ struct ScreenPolygon
     DepthPlane depth;
 };
 
-/// Reusable buffers (one per thread), so rasterizing allocates nothing once warmed up.
+/// Reusable buffers (one per thread), so rasterizing allocates nothing once warmed up. Copying one
+/// gives fresh buffers (their contents never carry over between calls).
 struct MaskRasterScratch
 {
-    std::vector<float> depth;
-    std::vector<std::uint8_t> state;
+    std::vector<float> depth;         ///< the reference rasterizer's
+    std::vector<std::uint8_t> state;  ///< the reference rasterizer's
+    struct Tiles;                     ///< the tile rasterizer's polygon setups
+    std::unique_ptr<Tiles> tiles;
+
+    MaskRasterScratch();
+    ~MaskRasterScratch();
+    MaskRasterScratch(const MaskRasterScratch&);
+    MaskRasterScratch& operator=(const MaskRasterScratch&);
+    MaskRasterScratch(MaskRasterScratch&&) noexcept;
+    MaskRasterScratch& operator=(MaskRasterScratch&&) noexcept;
 };
 
 /// Rasterizes one group into `mask` (keeping the nearer depth where pixels are already covered).
 /// Degenerate polygons (fewer than 3 vertices, zero area, non-finite coordinates) veto every pixel
-/// they touch: they are never trusted. Returns the number of pixels the group covered.
+/// they touch: they are never trusted. Returns the number of pixels the group covered, except in
+/// 8 × 8 tiles skipped because the mask there is already covered no farther than anything the group
+/// could write (OcclusionMask::tileBound; the mask is the same as if they had been counted).
+/// Works in tiles with AVX2 or SSE2 kernels (docs/mask.md, "The tile rasterizer"); covers exactly
+/// the pixels the pixel-by-pixel reference covers, with depths never nearer than the reference's.
 std::size_t rasterizeOccluderGroup(OcclusionMask& mask, const ScreenPolygon* polygons, std::size_t count,
                                    double shrink, MaskRasterScratch& scratch);
 } // namespace osgVis::core
