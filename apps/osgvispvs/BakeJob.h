@@ -8,6 +8,7 @@
 #include "PvsToolOptions.h"
 
 #include <osgVis/core/pvs/PvsFormat.h>
+#include <osgVis/core/pvs/ViewCellMerge.h>
 #include <osgVis/core/scene/Scene.h>
 
 #include <cstdint>
@@ -57,6 +58,11 @@ std::unique_ptr<BakeJob> makeViewCellJob(const PvsToolOptions& o, const core::Sc
 /// Empty when `file` was baked for the same model and bake as `identity` (fingerprints, object
 /// count, method, options, near distance), else what differs; shared by both jobs.
 std::string bakeIdentityMismatch(const core::PvsFile& file, const core::PvsFile& identity);
+/// The output from the units' range files: `merge` (mergeCellPortalPvs or mergeViewCellPvs), every
+/// cell required when the command bakes them all, the model named relative to `pvsFile`.
+core::PvsFile joinUnitFiles(core::PvsFile (*merge)(const std::vector<core::PvsFile>&, const core::ViewCellMergeOptions&),
+                            const std::vector<core::PvsFile>& units, bool allCells, const std::string& modelFile,
+                            const std::string& pvsFile);
 /// The range [first, end) the command asks for within `total` cells (--cells or --shard), checked.
 std::pair<std::uint32_t, std::uint32_t> requestedCells(const PvsToolOptions& o, std::uint32_t total, const char* what);
 } // namespace osgVis::pvstool

@@ -28,6 +28,17 @@ std::string bakeIdentityMismatch(const core::PvsFile& file, const core::PvsFile&
     return "";
 }
 
+core::PvsFile joinUnitFiles(core::PvsFile (*merge)(const std::vector<core::PvsFile>&, const core::ViewCellMergeOptions&),
+                            const std::vector<core::PvsFile>& units, bool allCells, const std::string& modelFile,
+                            const std::string& pvsFile)
+{
+    core::ViewCellMergeOptions options;
+    options.requireAllCells = allCells;
+    core::PvsFile file = merge(units, options);
+    file.modelPath = modelPathFromPvs(modelFile, pvsFile);
+    return file;
+}
+
 std::pair<std::uint32_t, std::uint32_t> requestedCells(const PvsToolOptions& o, std::uint32_t total, const char* what)
 {
     if (o.shard)

@@ -66,11 +66,7 @@ public:
 
     core::PvsFile join(std::vector<core::PvsFile>&& units, const std::string& pvsFile) const override
     {
-        core::ViewCellMergeOptions options;
-        options.requireAllCells = _range == std::make_pair(0u, cellCount());
-        core::PvsFile file = core::mergeCellPortalPvs(units, options);
-        file.modelPath = modelPathFromPvs(_o.modelFile, pvsFile);
-        return file;
+        return joinUnitFiles(core::mergeCellPortalPvs, units, _range == std::make_pair(0u, cellCount()), _o.modelFile, pvsFile);
     }
 
     void report(const core::PvsFile& output, const BakeRunFigures& run) const override

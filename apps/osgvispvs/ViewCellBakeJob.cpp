@@ -178,11 +178,7 @@ public:
 
     core::PvsFile join(std::vector<core::PvsFile>&& units, const std::string& pvsFile) const override
     {
-        core::ViewCellMergeOptions options;
-        options.requireAllCells = _range == std::make_pair(0u, cellCount());
-        core::PvsFile file = core::mergeViewCellPvs(units, options);
-        file.modelPath = modelPathFromPvs(_o.modelFile, pvsFile);
-        return file;
+        return joinUnitFiles(core::mergeViewCellPvs, units, _range == std::make_pair(0u, cellCount()), _o.modelFile, pvsFile);
     }
 
     void report(const core::PvsFile& output, const BakeRunFigures& run) const override;
