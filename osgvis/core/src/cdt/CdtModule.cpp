@@ -1,0 +1,394 @@
+// SPDX-License-Identifier: MIT
+// Luka, "Visibility culling with a constrained Delaunay triangulation": the front-to-back kd-tree
+// traversal of §2.2.4 over the occlusion record of §2.2.1-§2.2.3 (cdt/CoverageTriangulation.h),
+// with the rules of §2.3.1 for which occluders may count. docs/cdt.md says why each step is safe.
+#include <osgVis/core/cdt/CdtModule.h>
+#include <osgVis/core/cdt/CoverageTriangulation.h>
+#include <osgVis/core/occluders/OccluderBuilder.h>
+
+#include "CellKdTree.h"
+#include "ScreenGrid.h"
+
+#include <algorithm>
+#include <chrono>
+#include <unordered_map>
+
+namespace osgVis::core
+{
+namespace
+{
+struct EdgeKey
+{
+    Vec3 a, b;
+    bool operator==(const EdgeKey& o) const { return a == o.a && b == o.b; }
+};
+struct EdgeKeyHash
+{
+    std::size_t operator()(const EdgeKey& k) const
+    {
+        std::size_t h = 1469598103934665603ull;
+        for (double v : {k.a.x, k.a.y, k.a.z, k.b.x, k.b.y, k.b.z})
+            h = (h ^ std::hash<double>()(v)) * 1099511628211ull;
+        return h;
+    }
+};
+
+enum class Drawn : std::uint8_t
+{
+    Untested,
+    Visible,
+    Hidden,
+};
+} // namespace
+
+struct CdtModule::Impl
+{
+    CellKdTree tree;
+    std::vector<OccluderPolygon> polygons;
+    std::vector<Aabb> polygonBounds;
+    /// Per polygon, per edge: the polygons with exactly that edge (same end points, opposite
+    /// direction); one lying across it on screen and drawn closes the edge without a crack.
+    std::vector<std::vector<std::vector<std::uint32_t>>> twins;
+    std::vector<std::vector<std::uint32_t>> polygonsOf; ///< per object
+    std::vector<std::uint32_t> statedPolygons;          ///< owner InvalidObject
+
+    // Per frame.
+    cdt::CoverageTriangulation record;
+    ScreenGrid grid;
+    View view;
+    std::vector<Drawn> drawn;
+    /// Per polygon this frame: the cover kinds it was drawn with (bit 1 << kind), and whether an
+    /// edge was eroded only because its twin's object was not tested yet (drawn again once it is).
+    std::vector<std::uint8_t> drawnKinds, waitsForTwin;
+    std::vector<bool> keep;
+    GridPolygon projected;
+    std::vector<cdt::GridPoint> outline;
+    /// Per tree depth (an inner node's list must outlive its children's): the node's objects by distance.
+    std::vector<std::vector<std::pair<double, ObjectId>>> orderScratch = std::vector<std::vector<std::pair<double, ObjectId>>>(64);
+    Statistics stats;
+    std::uint32_t testsLeft = 0;
+    bool unlimitedTests = true;
+};
+
+CdtModule::CdtModule(const CdtOptions& options) : _options(options), _impl(std::make_unique<Impl>()) {}
+CdtModule::~CdtModule() = default;
+
+const char* CdtModule::name() const
+{
+    switch (_options.rule)
+    {
+    case CdtOptions::Rule::DepthFree:
+        return "cdt-depthfree";
+    case CdtOptions::Rule::DepthOnly:
+        return "cdt-depth";
+    default:
+        return "cdt";
+    }
+}
+
+void CdtModule::setScene(const Scene& scene)
+{
+    _scene = &scene;
+    Impl& m = *_impl;
+    std::vector<Aabb> bounds(scene.objects.size());
+    std::vector<bool> present(scene.objects.size(), true);
+    for (const SceneObject& object : scene.objects)
+    {
+        bounds[object.id] = object.bounds;
+        present[object.id] = !(object.flags & OBJECT_ALWAYS_VISIBLE);
+    }
+    m.tree.build(bounds, present, _options.maxLeafObjects);
+
+    m.polygons = buildOccluderPolygons(scene);
+    m.polygonBounds.assign(m.polygons.size(), Aabb{});
+    m.twins.assign(m.polygons.size(), {});
+    std::unordered_multimap<EdgeKey, std::uint32_t, EdgeKeyHash> edges;
+    m.polygonsOf.assign(scene.objects.size(), {});
+    m.statedPolygons.clear();
+    for (std::uint32_t i = 0; i < m.polygons.size(); ++i)
+    {
+        const OccluderPolygon& p = m.polygons[i];
+        for (const Vec3& v : p.vertices)
+            m.polygonBounds[i].expand(v);
+        for (std::size_t e = 0; e < p.vertices.size(); ++e)
+            edges.emplace(EdgeKey{p.vertices[e], p.vertices[(e + 1) % p.vertices.size()]}, i);
+        if (p.owner == InvalidObject)
+            m.statedPolygons.push_back(i);
+        else if (p.owner < m.polygonsOf.size())
+            m.polygonsOf[p.owner].push_back(i);
+    }
+    // Twins: every polygon that has the same edge in the opposite direction (a face's back-side
+    // copy has it in the same direction, a neighbour across a fold too: which of them may stand
+    // for the sliver along the edge is decided per view).
+    for (std::uint32_t i = 0; i < m.polygons.size(); ++i)
+    {
+        const OccluderPolygon& p = m.polygons[i];
+        const std::size_t n = p.vertices.size();
+        m.twins[i].assign(n, {});
+        if (p.insideSolid)
+            continue;
+        for (std::size_t e = 0; e < n; ++e)
+        {
+            const auto [first, last] = edges.equal_range(EdgeKey{p.vertices[(e + 1) % n], p.vertices[e]});
+            for (auto it = first; it != last; ++it)
+                if (it->second != i && !m.polygons[it->second].insideSolid)
+                    m.twins[i][e].push_back(it->second);
+        }
+    }
+    m.drawn.assign(scene.objects.size(), Drawn::Untested);
+}
+
+namespace
+{
+/// True when the GPU draws the polygon for this eye (face culling) and it may stand for what it
+/// covers (a section inside a solid hides only from outside that solid).
+bool facesEye(const OccluderPolygon& p, const Scene& scene, const Vec3& eye)
+{
+    if (p.oneSided && p.plane.distance(eye) <= 0.0)
+        return false;
+    if (p.insideSolid && p.owner < scene.objects.size() && scene.objects[p.owner].bounds.contains(eye))
+        return false;
+    return true;
+}
+} // namespace
+
+void CdtModule::cull(const View& view, VisibleSet& visible)
+{
+    Impl& m = *_impl;
+    const auto start = std::chrono::steady_clock::now();
+    m.stats = {};
+    if (!_scene || m.tree.empty() || !m.grid.set(view, _options.tolerancePixels))
+        return;
+    const Scene& scene = *_scene;
+    m.view = view;
+    if (_debug)
+        _debug->clear();
+    auto debugNode = [&](const Aabb& bounds, NodeState state, std::size_t depth) {
+        if (_debug)
+            _debug->nodes.push_back({bounds, state, std::uint32_t(depth)});
+    };
+    const std::int32_t limit = m.grid.limit();
+    m.record.reset(-limit, -limit, limit, limit);
+    m.record.setConstraintBudget(0); // budgeted here, whole occluders at a time
+    std::fill(m.drawn.begin(), m.drawn.end(), Drawn::Untested);
+    m.drawnKinds.assign(m.polygons.size(), 0);
+    m.waitsForTwin.assign(m.polygons.size(), 0);
+    m.unlimitedTests = _options.testBudget == 0;
+    m.testsLeft = _options.testBudget;
+    const double margin = m.grid.depthMargin();
+
+    auto allowTest = [&]() {
+        if (m.unlimitedTests)
+            return true;
+        if (m.testsLeft == 0)
+        {
+            m.stats.testBudgetReached = true;
+            return false;
+        }
+        --m.testsLeft;
+        return true;
+    };
+    // Hidden behind what the record holds (Outside the frustum counts as hidden too).
+    auto boxHidden = [&](const Aabb& box) {
+        if (view.frustum.classify(box) == Containment::Outside)
+            return true;
+        double nearestW = 0.0;
+        if (!m.grid.projectBox(box, m.outline, nearestW))
+            return false;
+
+        return m.record.hidden(m.outline.data(), m.outline.size(), cdt::QueryMode::DepthFree, nearestW + margin);
+    };
+    auto drawPolygon = [&](std::uint32_t index, cdt::CoverKind kind) {
+        const OccluderPolygon& p = m.polygons[index];
+        if (!facesEye(p, scene, view.eye))
+            return;
+        for (ObjectId part : p.parts)
+            if (part >= m.drawn.size() || m.drawn[part] != Drawn::Visible)
+                return;
+        const std::size_t n = p.vertices.size();
+        m.keep.assign(n, false);
+        bool waits = false;
+        for (std::size_t e = 0; e < n; ++e)
+        {
+            // The pair draws watertight only where the twin lies across the edge on screen; one
+            // folded onto this side leaves the snapping sliver along the edge uncovered.
+            const Vec3& a = p.vertices[e];
+            const Vec3& b = p.vertices[(e + 1) % n];
+            const int mine = m.twins[index][e].empty() ? 0 : m.grid.sideOf(a, b, p.centroid);
+            for (std::uint32_t twin : m.twins[index][e])
+            {
+                if (mine == 0 || m.keep[e])
+                    break;
+                const OccluderPolygon& other = m.polygons[twin];
+                if (m.grid.sideOf(a, b, other.centroid) != -mine || !facesEye(other, scene, view.eye))
+                    continue;
+                bool drawnNow = other.owner < m.drawn.size() && m.drawn[other.owner] == Drawn::Visible;
+                bool untested = other.owner < m.drawn.size() && m.drawn[other.owner] == Drawn::Untested;
+                for (ObjectId part : other.parts)
+                {
+                    drawnNow = drawnNow && part < m.drawn.size() && m.drawn[part] == Drawn::Visible;
+                    untested = untested || (part < m.drawn.size() && m.drawn[part] == Drawn::Untested);
+                }
+                m.keep[e] = drawnNow;
+                waits = waits || (!drawnNow && untested);
+            }
+        }
+        if (!m.grid.projectOccluder(p.vertices, &m.keep, m.projected))
+            return;
+        if (kind == cdt::CoverKind::DepthOnly && !m.projected.nearness.valid)
+            return;
+        // Where cover that needs no depth already lies, another occluder adds nothing: every query
+        // there is answered hidden already (queries in this traversal all accept depth-free cover).
+        if (m.record.hidden(m.projected.points.data(), m.projected.points.size(), cdt::QueryMode::DepthFree))
+        {
+            ++m.stats.occludersAlreadyCovered;
+            return;
+        }
+        const std::uint32_t edges = std::uint32_t(m.projected.points.size());
+        if (_options.constraintBudget != 0 && m.stats.constraintEdges + edges > _options.constraintBudget)
+        {
+            ++m.stats.occludersOverBudget;
+            return;
+        }
+        if (m.record.insertOccluder(m.projected.points.data(), m.projected.points.size(), kind, m.projected.nearness))
+        {
+            ++m.stats.occludersDrawn;
+            m.drawnKinds[index] |= std::uint8_t(1u << unsigned(kind));
+            m.waitsForTwin[index] = waits;
+            if (_debug)
+                _debug->activeOccluders.push_back(p.vertices);
+            m.stats.constraintEdges += edges;
+            for (bool k : m.keep)
+                m.stats.sharedEdgesKept += k ? 1u : 0u;
+        }
+    };
+    // A polygon drawn before this object was found visible eroded the edge it shares with it:
+    // drawn again with the same covers, the edge now closes.
+    auto redrawTwinsOf = [&](ObjectId id) {
+        for (std::uint32_t index : m.polygonsOf[id])
+            for (const std::vector<std::uint32_t>& edgeTwins : m.twins[index])
+                for (std::uint32_t twin : edgeTwins)
+                    if (m.waitsForTwin[twin])
+                    {
+                        m.waitsForTwin[twin] = 0;
+                        ++m.stats.redrawn;
+                        for (unsigned kind = 0; kind < 2; ++kind)
+                            if (m.drawnKinds[twin] & (1u << kind))
+                                drawPolygon(twin, cdt::CoverKind(kind));
+                    }
+    };
+    // The polygons of a visible object; without depth only when they lie inside `cell` (a cell
+    // every later one is behind), by depth otherwise.
+    auto drawObject = [&](ObjectId id, const Aabb* cell) {
+        for (std::uint32_t index : m.polygonsOf[id])
+        {
+            const bool inside = cell && cell->contains(m.polygonBounds[index].min) && cell->contains(m.polygonBounds[index].max);
+            drawPolygon(index, inside ? cdt::CoverKind::DepthFree : cdt::CoverKind::DepthOnly);
+        }
+    };
+    auto cullSubtree = [&](auto&& self, std::uint32_t node) -> void {
+        const CellKdTree::Node& n = m.tree.node(node);
+        for (std::uint32_t i = 0; i < n.objectCount; ++i)
+            visible.clear(m.tree.objects()[n.firstObject + i]);
+        if (!n.leaf())
+        {
+            self(self, n.left);
+            self(self, n.right);
+        }
+    };
+    const bool depthOnly = _options.rule == CdtOptions::Rule::DepthOnly;
+    for (std::uint32_t index : m.statedPolygons)
+        drawPolygon(index, cdt::CoverKind::DepthOnly);
+
+    auto visit = [&](auto&& self, std::uint32_t node, std::size_t depth) -> bool {
+        const CellKdTree::Node& n = m.tree.node(node);
+        if (n.contents.empty())
+            return true;
+        if (!allowTest())
+            return false;
+        ++m.stats.nodesVisited;
+        if (view.frustum.classify(n.contents) == Containment::Outside)
+        {
+            debugNode(n.contents, NodeState::OutsideFrustum, depth);
+            cullSubtree(cullSubtree, node);
+            return true;
+        }
+        if (boxHidden(n.contents))
+        {
+            ++m.stats.nodesHidden;
+            debugNode(n.contents, NodeState::Invisible, depth);
+            cullSubtree(cullSubtree, node);
+            return true;
+        }
+        // The objects held here, nearest first. Each is tested against the record as it stood
+        // when the node was entered plus, by depth only, what nearer objects here added: objects
+        // of one node are not ordered along rays, so depth is all that may separate them.
+        std::vector<std::pair<double, ObjectId>>& order = m.orderScratch[std::min<std::size_t>(depth, m.orderScratch.size() - 1)];
+        order.clear();
+        for (std::uint32_t i = 0; i < n.objectCount; ++i)
+        {
+            const ObjectId id = m.tree.objects()[n.firstObject + i];
+            if (!visible.test(id))
+                continue;
+            const Aabb& b = scene.objects[id].bounds;
+            const Vec3 nearest = glm::clamp(view.eye, b.min, b.max);
+            order.emplace_back(glm::length(nearest - view.eye), id);
+        }
+        std::sort(order.begin(), order.end());
+        for (const auto& [distance, id] : order)
+        {
+            if (!allowTest())
+                return false;
+            ++m.stats.objectsTested;
+            const Aabb& b = scene.objects[id].bounds;
+            if (view.frustum.classify(b) == Containment::Outside)
+            {
+                ++m.stats.outsideFrustum;
+                m.drawn[id] = Drawn::Hidden;
+                visible.clear(id);
+            }
+            else if (boxHidden(b))
+            {
+                ++m.stats.objectsHidden;
+                m.drawn[id] = Drawn::Hidden;
+                visible.clear(id);
+            }
+            else
+            {
+                m.drawn[id] = Drawn::Visible;
+                redrawTwinsOf(id);
+                // By depth at once: every object under cdt-depth; under cdt the straddling ones,
+                // which may not hide the rest of their subtree otherwise (a leaf's few objects
+                // rarely hide each other, and the leaf's cover comes a moment later anyway).
+                if (depthOnly || (_options.rule == CdtOptions::Rule::Combined && !n.leaf()))
+                    drawObject(id, nullptr);
+            }
+        }
+        // Once the node's cell is finished, its objects hide every later cell without depth.
+        auto drawHeldWithoutDepth = [&]() {
+            if (depthOnly)
+                return;
+            for (const auto& entry : order)
+                if (m.drawn[entry.second] == Drawn::Visible)
+                    drawObject(entry.second, &n.cell);
+        };
+        if (n.leaf())
+        {
+            debugNode(n.contents, NodeState::Visible, depth);
+            drawHeldWithoutDepth();
+            return true;
+        }
+        const bool lowFirst = view.eye[n.axis] < n.split;
+        if (!self(self, lowFirst ? n.left : n.right, depth + 1) || !self(self, lowFirst ? n.right : n.left, depth + 1))
+            return false;
+        // The subtree is done: everything still to come lies behind this cell.
+        drawHeldWithoutDepth();
+        return true;
+    };
+    visit(visit, m.tree.root(), 0);
+    m.stats.triangles = m.record.statistics().triangles;
+    m.stats.cullMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+CdtModule::Statistics CdtModule::lastStatistics() const { return _impl->stats; }
+} // namespace osgVis::core
