@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/core/api/ModuleRegistry.h>
 
+#include <osgVis/core/cdt/CdtModule.h>
 #include <osgVis/core/cellportal/CellPortalModule.h>
 #include <osgVis/core/frustum/FrustumModule.h>
 #include <osgVis/core/mask/MaskModule.h>
@@ -50,6 +51,14 @@ struct Registry
             return std::make_unique<MaskModule>(approx);
         };
         factories["multifocal"] = [] { return std::make_unique<MultifocalModule>(); };
+        for (const auto& [name, rule] : {std::pair{"cdt", CdtOptions::Rule::Combined},
+                                          std::pair{"cdt-depthfree", CdtOptions::Rule::DepthFree},
+                                          std::pair{"cdt-depth", CdtOptions::Rule::DepthOnly}})
+        {
+            CdtOptions options;
+            options.rule = rule;
+            factories[name] = [options] { return std::make_unique<CdtModule>(options); };
+        }
         factories["mask-distance"] = []
         {
             MaskOptions distance;
