@@ -382,8 +382,37 @@ std::string CoverageTriangulation::validate() const
     return {};
 }
 
+double CoverageTriangulation::constraintDeviation() const
+{
+    const Impl& m = *_impl;
+    const auto distance = [](GridPoint p, const OriginalSegment& s) {
+        const double fx = double(p.x) - s.a.x, fy = double(p.y) - s.a.y;
+        const double dx = double(s.b.x) - s.a.x, dy = double(s.b.y) - s.a.y;
+        double best = std::numeric_limits<double>::infinity();
+        const double candidates[6] = {0.0, 1.0, fx / dx, fy / dy, (fx - fy) / (dx - dy), (fx + fy) / (dx + dy)};
+        for (double t : candidates)
+        {
+            if (!std::isfinite(t))
+                continue;
+            t = std::clamp(t, 0.0, 1.0);
+            best = std::min(best, std::max(std::abs(fx - t * dx), std::abs(fy - t * dy)));
+        }
+        return best;
+    };
+    double worst = 0.0;
+    for (const Triangle& t : m.tris)
+        for (int i = 0; i < 3; ++i)
+            if (t.c[i] >= 0)
+            {
+                const OriginalSegment& s = m.originals[t.c[i]];
+                worst = std::max({worst, distance(m.points[t.v[(i + 1) % 3]], s), distance(m.points[t.v[(i + 2) % 3]], s)});
+            }
+    return worst;
+}
+
 const CoverageStatistics& CoverageTriangulation::statistics() const
 {
+    _impl->stats.roundingFallbacks = _impl->roundingFallbacks;
     _impl->stats.triangles = std::uint32_t(_impl->tris.size());
     _impl->stats.vertices = std::uint32_t(_impl->points.size());
     return _impl->stats;
