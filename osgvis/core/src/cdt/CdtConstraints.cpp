@@ -110,8 +110,16 @@ bool CoverageTriangulation::Impl::insertSegment(std::int32_t p0, std::int32_t q0
                 bool proper = false;
                 if (!roundedCrossing(s.a, s.b, e.a, e.b, c, proper) || !proper)
                 {
+                    // The originals do not meet (their pieces do, after rounding): take, of the
+                    // rounded crossing of the pieces and the four end points, the one nearest to
+                    // both originals (docs/cdt.md: no proven bound here, measured instead).
                     ++roundingFallbacks;
                     roundedCrossing(P, Q, points[r], points[l], c, proper);
+                    const auto worse = [&](GridPoint g) { return std::max(linfDistance(g, s), linfDistance(g, e)); };
+                    double best = worse(c);
+                    for (const std::int32_t v : {r, l, p, q})
+                        if (const double d = worse(points[v]); d < best)
+                            best = d, c = points[v];
                 }
                 ++stats.crossings;
                 const std::int32_t cv = insertPoint(c);

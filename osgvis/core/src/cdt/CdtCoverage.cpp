@@ -385,20 +385,7 @@ std::string CoverageTriangulation::validate() const
 double CoverageTriangulation::constraintDeviation() const
 {
     const Impl& m = *_impl;
-    const auto distance = [](GridPoint p, const OriginalSegment& s) {
-        const double fx = double(p.x) - s.a.x, fy = double(p.y) - s.a.y;
-        const double dx = double(s.b.x) - s.a.x, dy = double(s.b.y) - s.a.y;
-        double best = std::numeric_limits<double>::infinity();
-        const double candidates[6] = {0.0, 1.0, fx / dx, fy / dy, (fx - fy) / (dx - dy), (fx + fy) / (dx + dy)};
-        for (double t : candidates)
-        {
-            if (!std::isfinite(t))
-                continue;
-            t = std::clamp(t, 0.0, 1.0);
-            best = std::min(best, std::max(std::abs(fx - t * dx), std::abs(fy - t * dy)));
-        }
-        return best;
-    };
+    const auto distance = linfDistance;
     double worst = 0.0;
     for (const Triangle& t : m.tris)
         for (int i = 0; i < 3; ++i)

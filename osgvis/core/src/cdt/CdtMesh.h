@@ -10,7 +10,10 @@
 
 #include <osgVis/core/cdt/CoverageTriangulation.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace osgVis::core::cdt
@@ -20,6 +23,23 @@ struct OriginalSegment
 {
     GridPoint a, b;
 };
+
+/// The L-infinity distance of p from the segment (exact enough for measuring: doubles).
+inline double linfDistance(GridPoint p, const OriginalSegment& s)
+{
+    const double fx = double(p.x) - s.a.x, fy = double(p.y) - s.a.y;
+    const double dx = double(s.b.x) - s.a.x, dy = double(s.b.y) - s.a.y;
+    double best = std::numeric_limits<double>::infinity();
+    const double candidates[6] = {0.0, 1.0, fx / dx, fy / dy, (fx - fy) / (dx - dy), (fx + fy) / (dx + dy)};
+    for (double t : candidates)
+    {
+        if (!std::isfinite(t))
+            continue;
+        t = std::clamp(t, 0.0, 1.0);
+        best = std::min(best, std::max(std::abs(fx - t * dx), std::abs(fy - t * dy)));
+    }
+    return best;
+}
 
 struct Triangle
 {
