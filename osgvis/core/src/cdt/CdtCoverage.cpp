@@ -270,6 +270,8 @@ bool CoverageTriangulation::insertOccluder(const GridPoint* ccw, std::size_t cou
     const std::int64_t X3 = std::int64_t(poly[0].x) + poly[i0].x + poly[i0 + 1].x;
     const std::int64_t Y3 = std::int64_t(poly[0].y) + poly[i0].y + poly[i0 + 1].y;
     // note: even an incomplete outline covers soundly: covers are certified triangle by triangle.
+    if (firstVertex >= 0)
+        m.hint = m.pointTriangle[firstVertex]; // the walk to the centroid starts at a corner
     m.coverOccluder(occluder, X3, Y3);
     ++m.stats.occludersInserted;
     m.stats.triangles = std::uint32_t(m.tris.size());
