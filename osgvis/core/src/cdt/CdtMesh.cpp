@@ -33,6 +33,7 @@ void CoverageTriangulation::Impl::resetMesh(std::int32_t ax, std::int32_t ay, st
     tris.push_back({{0, 1, 2}, {-1, 1, -1}, {-1, -1, -1}, -1, -1, none, 0});
     tris.push_back({{0, 2, 3}, {-1, -1, 0}, {-1, -1, -1}, -1, -1, none, 0});
     hint = 0;
+    std::fill(bucketVertex, bucketVertex + Buckets * Buckets, -1);
 }
 
 std::int32_t CoverageTriangulation::Impl::farVertex(std::int32_t t, std::int32_t u, std::int32_t w) const
@@ -73,6 +74,8 @@ EdgeRef CoverageTriangulation::Impl::findEdge(std::int32_t u, std::int32_t w) co
 
 std::int32_t CoverageTriangulation::Impl::locateScaled(std::int64_t X, std::int64_t Y) const
 {
+    if (const std::int32_t v = bucketVertex[bucketOf(X, Y)]; v >= 0 && v < std::int32_t(points.size()))
+        hint = pointTriangle[v];
     std::int32_t t = (hint >= 0 && hint < std::int32_t(tris.size())) ? hint : 0;
     for (std::size_t step = 0; step < 4 * tris.size() + 64; ++step)
     {
@@ -247,6 +250,7 @@ std::int32_t CoverageTriangulation::Impl::insertPoint(GridPoint p)
         }
     }
     ++stats.vertices;
+    bucketVertex[bucketOf(3 * std::int64_t(p.x), 3 * std::int64_t(p.y))] = pv;
     legalize();
     return pv;
 }

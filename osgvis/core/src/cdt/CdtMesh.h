@@ -11,6 +11,7 @@
 #include <osgVis/core/cdt/CoverageTriangulation.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -84,6 +85,15 @@ struct CoverageTriangulation::Impl
     mutable std::int32_t hint = 0;
     mutable std::uint32_t randomState = 1;
     mutable std::uint32_t floodStamp = 0;
+    /// A recent vertex in each cell of a 64 x 64 bucket grid over the rectangle: walks start there.
+    static constexpr int Buckets = 64;
+    std::int32_t bucketVertex[Buckets * Buckets];
+    int bucketOf(std::int64_t X3, std::int64_t Y3) const
+    {
+        const std::int64_t bx = (X3 - 3 * std::int64_t(x0)) * Buckets / (3 * (std::int64_t(x1) - x0) + 1);
+        const std::int64_t by = (Y3 - 3 * std::int64_t(y0)) * Buckets / (3 * (std::int64_t(y1) - y0) + 1);
+        return int(std::clamp<std::int64_t>(by, 0, Buckets - 1) * Buckets + std::clamp<std::int64_t>(bx, 0, Buckets - 1));
+    }
     mutable CoverageStatistics stats;
 
     // Reused buffers (no allocation once they reached their size).
