@@ -29,7 +29,8 @@ std::vector<GridPoint> randomQuad(std::mt19937_64& rng)
     const double c = std::cos(angle), s = std::sin(angle);
     std::vector<GridPoint> q;
     for (const auto& [x, y] : {std::pair{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}})
-        q.push_back({std::int32_t(std::lround(cx + c * x * w - s * y * h)), std::int32_t(std::lround(cy + s * x * w + c * y * h))});
+        q.push_back({std::int32_t(std::lround(cx + c * x * w - s * y * h)),
+                     std::int32_t(std::lround(cy + s * x * w + c * y * h))});
     return q;
 }
 

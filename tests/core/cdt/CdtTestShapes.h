@@ -14,14 +14,16 @@ using osgVis::core::cdt::GridPoint;
 
 inline std::int64_t cross(GridPoint o, GridPoint a, GridPoint b)
 {
-    return (std::int64_t(a.x) - o.x) * (std::int64_t(b.y) - o.y) - (std::int64_t(a.y) - o.y) * (std::int64_t(b.x) - o.x);
+    return (std::int64_t(a.x) - o.x) * (std::int64_t(b.y) - o.y) -
+           (std::int64_t(a.y) - o.y) * (std::int64_t(b.x) - o.x);
 }
 
 /// Counter-clockwise convex hull (Andrew's monotone chain), collinear points dropped.
 inline std::vector<GridPoint> hull(std::vector<GridPoint> p)
 {
     std::sort(p.begin(), p.end(), [](GridPoint a, GridPoint b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-    p.erase(std::unique(p.begin(), p.end(), [](GridPoint a, GridPoint b) { return a.x == b.x && a.y == b.y; }), p.end());
+    p.erase(std::unique(p.begin(), p.end(), [](GridPoint a, GridPoint b) { return a.x == b.x && a.y == b.y; }),
+            p.end());
     if (p.size() < 3)
         return p;
     std::vector<GridPoint> h(2 * p.size());
@@ -47,7 +49,8 @@ inline std::vector<GridPoint> randomConvex(std::mt19937_64& rng, std::int64_t cx
                                            int points, bool thin)
 {
     std::uniform_int_distribution<std::int64_t> d(-size, size);
-    std::uniform_int_distribution<std::int64_t> dt(-std::max<std::int64_t>(1, size / 200), std::max<std::int64_t>(1, size / 200));
+    std::uniform_int_distribution<std::int64_t> dt(-std::max<std::int64_t>(1, size / 200),
+                                                   std::max<std::int64_t>(1, size / 200));
     for (;;)
     {
         std::vector<GridPoint> p;

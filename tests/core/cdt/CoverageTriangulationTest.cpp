@@ -103,9 +103,9 @@ TEST(CoverageTriangulation, OverlappingCollinearAndSharedVertices)
     CoverageTriangulation cdt;
     cdt.reset(-1000, -1000, 1000, 1000);
     ASSERT_TRUE(insert(cdt, rect(0, 0, 100, 100)));
-    ASSERT_TRUE(insert(cdt, rect(50, 0, 150, 100)));              // overlapping, collinear edges
-    ASSERT_TRUE(insert(cdt, rect(0, 0, 100, 100)));               // duplicate
-    ASSERT_TRUE(insert(cdt, rect(20, 20, 40, 40)));               // inside
+    ASSERT_TRUE(insert(cdt, rect(50, 0, 150, 100)));                // overlapping, collinear edges
+    ASSERT_TRUE(insert(cdt, rect(0, 0, 100, 100)));                 // duplicate
+    ASSERT_TRUE(insert(cdt, rect(20, 20, 40, 40)));                 // inside
     ASSERT_TRUE(insert(cdt, {{150, 100}, {250, 100}, {200, 200}})); // meets at a vertex
     ASSERT_TRUE(insert(cdt, {{0, 0}, {100, 1}, {200, 3}, {0, 2}})); // nearly parallel edges
     EXPECT_TRUE(hidden(cdt, rect(0, 0, 150, 100)));
@@ -121,7 +121,7 @@ TEST(CoverageTriangulation, HugeCoordinates)
     ASSERT_TRUE(insert(cdt, rect(-L, -L, 0, L)));
     ASSERT_TRUE(insert(cdt, {{0, -L}, {L, -L + 1}, {L, L}, {0, L}}));
     EXPECT_TRUE(hidden(cdt, rect(-L + 7, -L + 7, L - 7, L - 7)));
-    EXPECT_FALSE(hidden(cdt, rect(-L, -L, L, L))); // the corner (L, -L) is not covered
+    EXPECT_FALSE(hidden(cdt, rect(-L, -L, L, L)));                                // the corner (L, -L) is not covered
     ASSERT_TRUE(insert(cdt, {{L - 3, L - 3}, {-L + 1, L - 1}, {L - 1, -L + 5}})); // long, crossing
     EXPECT_LE(cdt.constraintDeviation(), 0.5);
 }
@@ -134,10 +134,10 @@ TEST(CoverageTriangulation, DepthBoundsAndModes)
     plane.c = 0.5;
     plane.valid = true;
     ASSERT_TRUE(insert(cdt, rect(0, 0, 20, 20), CoverKind::DepthOnly, plane));
-    EXPECT_TRUE(hidden(cdt, rect(2, 2, 18, 18), QueryMode::DepthOnly, 0.4));   // behind the plane
+    EXPECT_TRUE(hidden(cdt, rect(2, 2, 18, 18), QueryMode::DepthOnly, 0.4)); // behind the plane
     EXPECT_TRUE(hidden(cdt, rect(2, 2, 18, 18), QueryMode::DepthFree, 0.4));
-    EXPECT_FALSE(hidden(cdt, rect(2, 2, 18, 18), QueryMode::DepthOnly, 0.6));  // in front of it
-    EXPECT_FALSE(hidden(cdt, rect(2, 2, 18, 18), QueryMode::DepthFree, 0.6));  // depth-only cover
+    EXPECT_FALSE(hidden(cdt, rect(2, 2, 18, 18), QueryMode::DepthOnly, 0.6)); // in front of it
+    EXPECT_FALSE(hidden(cdt, rect(2, 2, 18, 18), QueryMode::DepthFree, 0.6)); // depth-only cover
     EXPECT_FALSE(hidden(cdt, rect(2, 2, 18, 18), QueryMode::DepthOnly));
 
     // A sloped plane: w = 0.01 x + 1; its least w over a triangle is at a vertex.
@@ -191,11 +191,11 @@ TEST(CoverageTriangulation, OutsideAndDegenerate)
     cdt.reset(0, 0, 100, 100);
     ASSERT_TRUE(insert(cdt, rect(-50, -50, 150, 150))); // clipped to the rectangle
     EXPECT_TRUE(hidden(cdt, rect(0, 0, 100, 100)));
-    EXPECT_FALSE(hidden(cdt, rect(-1, 0, 100, 100))); // reaches beyond the rectangle
+    EXPECT_FALSE(hidden(cdt, rect(-1, 0, 100, 100)));          // reaches beyond the rectangle
     EXPECT_FALSE(hidden(cdt, {{10, 10}, {20, 20}, {30, 30}})); // zero area
     EXPECT_FALSE(insert(cdt, {{10, 10}, {20, 20}, {30, 30}}));
     EXPECT_FALSE(insert(cdt, {{10, 10}, {10, 20}, {20, 10}})); // clockwise
-    EXPECT_FALSE(insert(cdt, rect(200, 200, 300, 300)));     // wholly outside
+    EXPECT_FALSE(insert(cdt, rect(200, 200, 300, 300)));       // wholly outside
 }
 
 TEST(CoverageTriangulation, RandomFramesKeepInvariants)
@@ -228,10 +228,12 @@ TEST(CoverageTriangulation, SteadyFrameAllocatesNothing)
     std::mt19937_64 rng(5);
     std::vector<std::vector<GridPoint>> polys;
     for (int k = 0; k < 64; ++k)
-        polys.push_back(randomConvex(rng, std::int64_t(rng() % 1600) - 800, std::int64_t(rng() % 1600) - 800, 150, 4, false));
+        polys.push_back(
+            randomConvex(rng, std::int64_t(rng() % 1600) - 800, std::int64_t(rng() % 1600) - 800, 150, 4, false));
     const auto query = rect(-50, -50, 50, 50);
     CoverageTriangulation cdt;
-    const auto frame = [&] {
+    const auto frame = [&]
+    {
         cdt.reset(-1000, -1000, 1000, 1000);
         for (const auto& p : polys)
             cdt.insertOccluder(p.data(), p.size(), CoverKind::DepthFree, {});

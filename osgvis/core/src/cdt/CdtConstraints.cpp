@@ -15,7 +15,8 @@ namespace
 {
 std::int64_t dot(GridPoint p, GridPoint a, GridPoint q)
 {
-    return (std::int64_t(a.x) - p.x) * (std::int64_t(q.x) - p.x) + (std::int64_t(a.y) - p.y) * (std::int64_t(q.y) - p.y);
+    return (std::int64_t(a.x) - p.x) * (std::int64_t(q.x) - p.x) +
+           (std::int64_t(a.y) - p.y) * (std::int64_t(q.y) - p.y);
 }
 constexpr std::size_t MaxPiecesPerSegment = 4096;
 } // namespace

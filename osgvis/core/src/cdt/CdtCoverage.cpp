@@ -15,7 +15,10 @@ namespace osgVis::core::cdt
 {
 namespace
 {
-bool zeroLength(GridPoint a, GridPoint b) { return a == b; }
+bool zeroLength(GridPoint a, GridPoint b)
+{
+    return a == b;
+}
 
 /// True when the open segment (a, b) meets the interior of the convex counter-clockwise polygon
 /// (separating axes: its edges' normals and the segment's normal; weak separation, exact).
@@ -143,13 +146,17 @@ bool CoverageTriangulation::Impl::coverOccluder(std::int32_t occluder, std::int6
     return any;
 }
 
-CoverageTriangulation::CoverageTriangulation() : _impl(std::make_unique<Impl>()) { reset(0, 0, 1, 1); }
+CoverageTriangulation::CoverageTriangulation() : _impl(std::make_unique<Impl>())
+{
+    reset(0, 0, 1, 1);
+}
 CoverageTriangulation::~CoverageTriangulation() = default;
 
 void CoverageTriangulation::reset(std::int32_t x0, std::int32_t y0, std::int32_t x1, std::int32_t y1)
 {
     Impl& m = *_impl;
-    const auto clampGrid = [](std::int64_t v) { return std::int32_t(std::clamp<std::int64_t>(v, -GridLimit, GridLimit)); };
+    const auto clampGrid = [](std::int64_t v)
+    { return std::int32_t(std::clamp<std::int64_t>(v, -GridLimit, GridLimit)); };
     m.x0 = clampGrid(std::min(x0, x1));
     m.x1 = clampGrid(std::max(x0, x1));
     m.y0 = clampGrid(std::min(y0, y1));
@@ -170,7 +177,10 @@ void CoverageTriangulation::reset(std::int32_t x0, std::int32_t y0, std::int32_t
     m.stats.triangles = 2;
 }
 
-void CoverageTriangulation::setConstraintBudget(std::uint32_t edges) { _impl->budget = edges; }
+void CoverageTriangulation::setConstraintBudget(std::uint32_t edges)
+{
+    _impl->budget = edges;
+}
 
 bool CoverageTriangulation::insertOccluder(const GridPoint* ccw, std::size_t count, CoverKind kind,
                                            const AffineNearness& nearness)
@@ -196,12 +206,14 @@ bool CoverageTriangulation::insertOccluder(const GridPoint* ccw, std::size_t cou
             const auto inside = [&](GridPoint p) {
                 return side == 0 ? p.x >= m.x0 : side == 1 ? p.x <= m.x1 : side == 2 ? p.y >= m.y0 : p.y <= m.y1;
             };
-            const auto cut = [&](GridPoint p, GridPoint q) {
+            const auto cut = [&](GridPoint p, GridPoint q)
+            {
                 const bool vertical = side < 2;
                 const std::int64_t k = side == 0 ? m.x0 : side == 1 ? m.x1 : side == 2 ? m.y0 : m.y1;
                 const std::int64_t pa = vertical ? p.x : p.y, qa = vertical ? q.x : q.y;
                 const std::int64_t pb = vertical ? p.y : p.x, qb = vertical ? q.y : q.x;
-                const std::int32_t other = std::int32_t(roundDiv(Wide(pb) * (qa - pa) + Wide(k - pa) * (qb - pb), qa - pa));
+                const std::int32_t other =
+                    std::int32_t(roundDiv(Wide(pb) * (qa - pa) + Wide(k - pa) * (qb - pb), qa - pa));
                 return vertical ? GridPoint{std::int32_t(k), other} : GridPoint{other, std::int32_t(k)};
             };
             for (std::size_t i = 0; i < a.size(); ++i)
@@ -361,8 +373,8 @@ std::string CoverageTriangulation::validate() const
             if (n < 0)
             {
                 const GridPoint a = m.points[u], b = m.points[w];
-                const bool border = (a.x == b.x && (a.x == m.x0 || a.x == m.x1)) ||
-                                    (a.y == b.y && (a.y == m.y0 || a.y == m.y1));
+                const bool border =
+                    (a.x == b.x && (a.x == m.x0 || a.x == m.x1)) || (a.y == b.y && (a.y == m.y0 || a.y == m.y1));
                 if (!border)
                     return where(t, "open edge inside the rectangle");
                 continue;
@@ -394,7 +406,8 @@ double CoverageTriangulation::constraintDeviation() const
             if (t.c[i] >= 0)
             {
                 const OriginalSegment& s = m.originals[t.c[i]];
-                worst = std::max({worst, distance(m.points[t.v[(i + 1) % 3]], s), distance(m.points[t.v[(i + 2) % 3]], s)});
+                worst =
+                    std::max({worst, distance(m.points[t.v[(i + 1) % 3]], s), distance(m.points[t.v[(i + 2) % 3]], s)});
             }
     return worst;
 }

@@ -44,9 +44,9 @@ inline double linfDistance(GridPoint p, const OriginalSegment& s)
 
 struct Triangle
 {
-    std::int32_t v[3];  ///< counter-clockwise
-    std::int32_t n[3];  ///< neighbour across the edge opposite v[i]; -1: the rectangle's border
-    std::int32_t c[3];  ///< original segment of the constraint opposite v[i]; -1: no constraint
+    std::int32_t v[3];              ///< counter-clockwise
+    std::int32_t n[3];              ///< neighbour across the edge opposite v[i]; -1: the rectangle's border
+    std::int32_t c[3];              ///< original segment of the constraint opposite v[i]; -1: no constraint
     std::int32_t depthFreeOccluder; ///< a DepthFree occluder whose dilation contains the triangle; -1 none
     std::int32_t depthOccluder;     ///< the occluder giving depthBound; -1 none
     double depthBound;
@@ -92,7 +92,8 @@ struct CoverageTriangulation::Impl
     {
         const std::int64_t bx = (X3 - 3 * std::int64_t(x0)) * Buckets / (3 * (std::int64_t(x1) - x0) + 1);
         const std::int64_t by = (Y3 - 3 * std::int64_t(y0)) * Buckets / (3 * (std::int64_t(y1) - y0) + 1);
-        return int(std::clamp<std::int64_t>(by, 0, Buckets - 1) * Buckets + std::clamp<std::int64_t>(bx, 0, Buckets - 1));
+        return int(std::clamp<std::int64_t>(by, 0, Buckets - 1) * Buckets +
+                   std::clamp<std::int64_t>(bx, 0, Buckets - 1));
     }
     mutable CoverageStatistics stats;
 

@@ -14,8 +14,14 @@ namespace osgVis::core::cdt
 {
 using Wide = __int128;
 
-inline bool operator==(GridPoint a, GridPoint b) { return a.x == b.x && a.y == b.y; }
-inline bool operator!=(GridPoint a, GridPoint b) { return !(a == b); }
+inline bool operator==(GridPoint a, GridPoint b)
+{
+    return a.x == b.x && a.y == b.y;
+}
+inline bool operator!=(GridPoint a, GridPoint b)
+{
+    return !(a == b);
+}
 
 /// Twice the signed area of (a, b, c): > 0 counter-clockwise. Exact: |result| < 2^61.
 inline std::int64_t orient(GridPoint a, GridPoint b, GridPoint c)
@@ -25,7 +31,10 @@ inline std::int64_t orient(GridPoint a, GridPoint b, GridPoint c)
     return abx * acy - aby * acx;
 }
 
-inline int sign(std::int64_t v) { return (v > 0) - (v < 0); }
+inline int sign(std::int64_t v)
+{
+    return (v > 0) - (v < 0);
+}
 
 /// > 0 when d lies strictly inside the circle through the counter-clockwise a, b, c. Exact.
 inline int inCircle(GridPoint a, GridPoint b, GridPoint c, GridPoint d)

@@ -30,8 +30,8 @@
 ///
 /// Allocation: reset() keeps every buffer, so a frame's triangulation allocates nothing once the
 /// buffers reached their steady size.
-#include <cstdint>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
