@@ -7,7 +7,7 @@ packages=(
     build-essential cmake pkg-config
     libopenscenegraph-dev openscenegraph
     libglfw3-dev libglm-dev libopenmesh-dev libtinygltf-dev libtbb-dev libembree-dev
-    libgtest-dev libgmock-dev libbenchmark-dev libopenmpi-dev openmpi-bin
+    libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev libgmp-dev libmpfr-dev libopenmpi-dev openmpi-bin
     assimp-testmodels doxygen chromium openarena-081-maps unzip
     xvfb xauth x11-utils libgl1-mesa-dri mesa-utils
 )

@@ -7,7 +7,10 @@
 /// is covered and by what. No resolution: occluders fuse at object precision, with no sub-pixel
 /// gap and no shrinking.
 ///
-/// Robust by construction (docs/cdt.md):
+/// Robust by construction (docs/cdt.md); never hides what is not covered: a triangle counts as
+/// covered by an occluder only when an exact test shows it inside that occluder dilated by half a
+/// grid unit (the Minkowski sum with [-1/2, 1/2]^2), so every hidden() answer lies in the union of
+/// the dilated occluders whatever rounding did.
 /// - Every vertex is a point of a fixed integer grid, |x|, |y| <= GridLimit. Orientation is exact in
 ///   64-bit integers, in-circle in 128-bit integers (differences need 30 bits, the in-circle
 ///   determinant about 4·30 + 4 bits).
@@ -27,8 +30,8 @@
 ///
 /// Allocation: reset() keeps every buffer, so a frame's triangulation allocates nothing once the
 /// buffers reached their steady size.
-#include <cstdint>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
@@ -77,6 +80,9 @@ struct CoverageStatistics
     std::uint32_t occludersInserted = 0, occludersRefused = 0; ///< refused: budget or degenerate input
     std::uint32_t constraintEdges = 0, crossings = 0, flips = 0;
     std::uint32_t queries = 0, queryTrianglesVisited = 0;
+    /// Crossings whose original segments did not meet (their pieces did, after rounding): rounded
+    /// from the pieces' crossing instead (docs/cdt.md).
+    std::uint32_t roundingFallbacks = 0;
 };
 
 class CoverageTriangulation
@@ -122,6 +128,10 @@ public:
     /// Checks the triangulation's invariants (orientation, adjacency, constrained Delaunay
     /// property); for the tests. Returns an empty string or what is wrong.
     std::string validate() const;
+
+    /// The largest L-infinity distance of a constraint piece from the original segment it
+    /// remembers (grid units; for the tests and docs/cdt.md).
+    double constraintDeviation() const;
 
     const CoverageStatistics& statistics() const;
 

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The triangulation behind CoverageTriangulation (Luka, "Visibility culling with a constrained
+// Delaunay triangulation", §2.2.1-§2.2.3): triangles with neighbour links, constraint marks that
+// remember their original segment, and per-triangle covers certified by an exact containment test.
+// Vertex insertion with Lawson's flips (Lawson 1977; Sloan, "A fast algorithm for generating
+// constrained Delaunay triangulations", 1993), constraint insertion by Sloan's flipping
+// (CdtConstraints.cpp), coverage and queries (CdtCoverage.cpp).
+#include "GridPredicates.h"
+
+#include <osgVis/core/cdt/CoverageTriangulation.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace osgVis::core::cdt
+{
+/// An original input segment (an occluder edge as given): every constraint piece points at one.
+struct OriginalSegment
+{
+    GridPoint a, b;
+};
+
+/// The L-infinity distance of p from the segment (exact enough for measuring: doubles).
+inline double linfDistance(GridPoint p, const OriginalSegment& s)
+{
+    const double fx = double(p.x) - s.a.x, fy = double(p.y) - s.a.y;
+    const double dx = double(s.b.x) - s.a.x, dy = double(s.b.y) - s.a.y;
+    double best = std::numeric_limits<double>::infinity();
+    const double candidates[6] = {0.0, 1.0, fx / dx, fy / dy, (fx - fy) / (dx - dy), (fx + fy) / (dx + dy)};
+    for (double t : candidates)
+    {
+        if (!std::isfinite(t))
+            continue;
+        t = std::clamp(t, 0.0, 1.0);
+        best = std::min(best, std::max(std::abs(fx - t * dx), std::abs(fy - t * dy)));
+    }
+    return best;
+}
+
+struct Triangle
+{
+    std::int32_t v[3];              ///< counter-clockwise
+    std::int32_t n[3];              ///< neighbour across the edge opposite v[i]; -1: the rectangle's border
+    std::int32_t c[3];              ///< original segment of the constraint opposite v[i]; -1: no constraint
+    std::int32_t depthFreeOccluder; ///< a DepthFree occluder whose dilation contains the triangle; -1 none
+    std::int32_t depthOccluder;     ///< the occluder giving depthBound; -1 none
+    double depthBound;
+    std::uint32_t mark; ///< flood stamp
+};
+
+struct Occluder
+{
+    std::uint32_t first = 0, count = 0; ///< in Impl::occluderPoints (the unclipped input)
+    std::int64_t minX = 0, minY = 0, maxX = 0, maxY = 0;
+    CoverKind kind = CoverKind::DepthFree;
+    AffineNearness nearness;
+};
+
+struct EdgeRef
+{
+    std::int32_t t = -1, side = -1;
+};
+
+struct Piece
+{
+    std::int32_t p, q, original;
+};
+
+struct CoverageTriangulation::Impl
+{
+    std::vector<GridPoint> points;
+    std::vector<std::int32_t> pointTriangle; ///< a triangle incident to each vertex
+    std::vector<Triangle> tris;
+    std::vector<OriginalSegment> originals;
+    std::vector<Occluder> occluders;
+    std::vector<GridPoint> occluderPoints;
+    std::int32_t x0 = 0, y0 = 0, x1 = 1, y1 = 1;
+    std::uint32_t budget = 0;
+    std::uint32_t budgetUsed = 0;
+    mutable std::int32_t hint = 0;
+    mutable std::uint32_t randomState = 1;
+    mutable std::uint32_t floodStamp = 0;
+    /// A recent vertex in each cell of a 64 x 64 bucket grid over the rectangle: walks start there.
+    static constexpr int Buckets = 64;
+    std::int32_t bucketVertex[Buckets * Buckets];
+    int bucketOf(std::int64_t X3, std::int64_t Y3) const
+    {
+        const std::int64_t bx = (X3 - 3 * std::int64_t(x0)) * Buckets / (3 * (std::int64_t(x1) - x0) + 1);
+        const std::int64_t by = (Y3 - 3 * std::int64_t(y0)) * Buckets / (3 * (std::int64_t(y1) - y0) + 1);
+        return int(std::clamp<std::int64_t>(by, 0, Buckets - 1) * Buckets +
+                   std::clamp<std::int64_t>(bx, 0, Buckets - 1));
+    }
+    mutable CoverageStatistics stats;
+
+    // Reused buffers (no allocation once they reached their size).
+    std::vector<std::pair<std::int32_t, std::int32_t>> legalizeQueue;
+    std::vector<std::pair<std::int32_t, std::int32_t>> crossed;
+    std::vector<std::pair<std::int32_t, std::int32_t>> newEdges;
+    std::vector<Piece> pieces;
+    std::vector<GridPoint> clipA, clipB;
+    mutable std::vector<std::int32_t> stack;
+    std::uint32_t roundingFallbacks = 0;
+
+    // CdtMesh.cpp
+    void resetMesh(std::int32_t ax, std::int32_t ay, std::int32_t bx, std::int32_t by);
+    EdgeRef findEdge(std::int32_t u, std::int32_t w) const;
+    /// Finds the triangle containing 3·p = (X, Y) (scaled so centroids are exact); -1 outside.
+    std::int32_t locateScaled(std::int64_t X, std::int64_t Y) const;
+    /// Inserts the grid point (or returns the vertex already there); -1 outside the rectangle.
+    std::int32_t insertPoint(GridPoint p);
+    void rotate(std::int32_t t, int k);
+    void flip(std::int32_t t, int side);
+    void legalize();
+    void setNeighbour(std::int32_t t, std::int32_t oldN, std::int32_t newN);
+    int indexOf(std::int32_t t, std::int32_t v) const;
+
+    // CdtConstraints.cpp
+    /// Inserts the pieces of originals[original] from vertex p to vertex q. False when it gave up.
+    bool insertSegment(std::int32_t p, std::int32_t q, std::int32_t original);
+    bool insertPieceByFlips(std::int32_t p, std::int32_t q, std::int32_t original);
+    void markConstraint(EdgeRef e, std::int32_t original, bool on);
+    std::int32_t farVertex(std::int32_t t, std::int32_t u, std::int32_t w) const;
+
+    // CdtCoverage.cpp
+    bool containedIn(std::int32_t t, const Occluder& o) const;
+    void applyCover(std::int32_t t, std::int32_t occluder);
+    /// Clears t's cover and recomputes it from the candidate occluders (covers of the triangles t replaced).
+    void recover(std::int32_t t, const std::int32_t* cand, int count);
+    bool coverOccluder(std::int32_t occluder, std::int64_t X3, std::int64_t Y3);
+};
+} // namespace osgVis::core::cdt

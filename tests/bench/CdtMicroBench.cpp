@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// Micro-benchmark of the CDT method's occlusion record (issue 21): constraint insertion (random
+// convex quads inserted as occluders, a fresh frame each time; items/s = occluders/s, the
+// `constraints/s` counter = input constraint edges/s) and coverage queries (random axis-aligned
+// and rotated quads against the finished record; items/s = queries/s), for 64, 256 and 2000
+// occluders on a 1024 x 1024 screen scaled to a 2^20 grid.
+#include <osgVis/core/cdt/CoverageTriangulation.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace osgVis::core::cdt;
+
+namespace
+{
+constexpr std::int32_t Scale = 1024; // grid units per pixel
+constexpr std::int32_t Screen = 1024 * Scale;
+
+/// A random convex quad (a rotated rectangle) 5-200 px across, log-uniformly, on the screen.
+std::vector<GridPoint> randomQuad(std::mt19937_64& rng)
+{
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double size = 5.0 * std::pow(40.0, u(rng)) * Scale;
+    const double w = size, h = size * (0.3 + 0.7 * u(rng)), angle = u(rng) * 6.283185307179586;
+    const double cx = u(rng) * Screen, cy = u(rng) * Screen;
+    const double c = std::cos(angle), s = std::sin(angle);
+    std::vector<GridPoint> q;
+    for (const auto& [x, y] : {std::pair{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}})
+        q.push_back({std::int32_t(std::lround(cx + c * x * w - s * y * h)),
+                     std::int32_t(std::lround(cy + s * x * w + c * y * h))});
+    return q;
+}
+
+std::vector<std::vector<GridPoint>> quads(std::size_t n, std::uint64_t seed)
+{
+    std::mt19937_64 rng(seed);
+    std::vector<std::vector<GridPoint>> out;
+    while (out.size() < n)
+        out.push_back(randomQuad(rng));
+    return out;
+}
+
+void fill(CoverageTriangulation& cdt, const std::vector<std::vector<GridPoint>>& occluders)
+{
+    cdt.reset(0, 0, Screen, Screen);
+    for (const auto& q : occluders)
+        cdt.insertOccluder(q.data(), q.size(), CoverKind::DepthFree, {});
+}
+
+void BM_CdtInsertOccluders(benchmark::State& state)
+{
+    const auto occluders = quads(std::size_t(state.range(0)), 7);
+    CoverageTriangulation cdt;
+    for (auto _ : state)
+    {
+        fill(cdt, occluders);
+        benchmark::DoNotOptimize(cdt.statistics().triangles);
+    }
+    state.SetItemsProcessed(state.iterations() * std::int64_t(occluders.size()));
+    state.counters["constraints/s"] =
+        benchmark::Counter(double(state.iterations()) * double(occluders.size()) * 4.0, benchmark::Counter::kIsRate);
+    state.counters["triangles"] = double(cdt.statistics().triangles);
+    state.counters["crossings"] = double(cdt.statistics().crossings);
+}
+
+void BM_CdtQueries(benchmark::State& state)
+{
+    const auto occluders = quads(std::size_t(state.range(0)), 7);
+    const auto queries = quads(1024, 11);
+    CoverageTriangulation cdt;
+    fill(cdt, occluders);
+    std::size_t i = 0, hiddenCount = 0, total = 0;
+    for (auto _ : state)
+    {
+        const auto& q = queries[i++ % queries.size()];
+        const bool h = cdt.hidden(q.data(), q.size(), QueryMode::DepthFree);
+        hiddenCount += h;
+        ++total;
+        benchmark::DoNotOptimize(h);
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["hidden%"] = total ? 100.0 * double(hiddenCount) / double(total) : 0.0;
+}
+} // namespace
+
+BENCHMARK(BM_CdtInsertOccluders)->Arg(64)->Arg(256)->Arg(2000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CdtQueries)->Arg(64)->Arg(256)->Arg(2000)->Unit(benchmark::kMicrosecond);
+
+BENCHMARK_MAIN();
