@@ -56,9 +56,10 @@ TEST(CoverageTriangulationExact, HiddenAnswersLieInTheDilatedUnion)
     const auto start = std::chrono::steady_clock::now();
     for (; frames < 20000; ++frames)
     {
-        const int kind = frames % 10; // 0-4 small, 5 small far from the origin, 6-7 many occluders, 8 the whole grid, 9 slivers
-        const std::int64_t L = kind == 8 ? GridLimit : 256;
-        const std::int64_t offset = kind == 5 ? GridLimit - 257 : 0; // small shapes far from the origin
+        const int kind = frames % 10; // 0-3 small, 4 on a tiny grid, 5 small far from the origin, 6-7 many occluders, 8
+                                      // the whole grid, 9 slivers
+        const std::int64_t L = kind == 8 ? GridLimit : kind == 4 ? 12 : 256; // 4: a tiny grid, all degenerate
+        const std::int64_t offset = kind == 5 ? GridLimit - 257 : 0;         // small shapes far from the origin
         cdt.reset(std::int32_t(offset - L), std::int32_t(offset - L), std::int32_t(offset + L),
                   std::int32_t(offset + L));
         const int occluders = kind >= 6 && kind <= 7 ? 16 : 6;
@@ -100,9 +101,9 @@ TEST(CoverageTriangulationExact, HiddenAnswersLieInTheDilatedUnion)
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("exact check: %d frames, %d queries, %d hidden, all inside the dilated union; %.1f s\n", frames,
                 queries, hiddenAnswers, seconds);
-    std::printf("worst constraint deviation %.4f grid units (L-inf; bound 0.5), %u rounding fallbacks\n", worst,
+    std::printf("worst constraint deviation %.9f grid units (L-inf; bound 0.5), %u rounding fallbacks\n", worst,
                 fallbacks);
     EXPECT_GE(frames, 10000);
-    EXPECT_LE(worst, 0.5); // docs/cdt.md: the rounding bound
+    EXPECT_LE(worst, 0.5 + 1e-9); // docs/cdt.md: the rounding bound (measured in doubles)
     EXPECT_GT(hiddenAnswers, frames / 10);
 }

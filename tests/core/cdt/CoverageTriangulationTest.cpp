@@ -220,7 +220,7 @@ TEST(CoverageTriangulation, RandomFramesKeepInvariants)
         fallbacks += cdt.statistics().roundingFallbacks;
     }
     std::printf("worst constraint deviation %.4f grid units (L-inf), %u rounding fallbacks\n", worst, fallbacks);
-    EXPECT_LE(worst, 0.5); // docs/cdt.md: the rounding bound
+    EXPECT_LE(worst, 0.5 + 1e-9); // docs/cdt.md: the rounding bound (measured in doubles)
 }
 
 TEST(CoverageTriangulation, SteadyFrameAllocatesNothing)
