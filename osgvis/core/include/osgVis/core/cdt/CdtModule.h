@@ -41,7 +41,9 @@ struct CdtOptions
     /// τ: how far, in pixels, the GPU may place an edge from where exact geometry puts it (vertex
     /// snapping is 1/256 px in GL implementations; the rest is room for float transforms).
     double tolerancePixels = 1.0 / 16.0;
-    std::uint32_t maxLeafObjects = 4;
+    /// Objects a leaf holds at most: one lets every object hide the cells after it at once
+    /// (objects in one leaf are not ordered along rays, so they hide each other only by depth).
+    std::uint32_t maxLeafObjects = 1;
 };
 
 class CdtModule : public VisibilityModule
