@@ -8,6 +8,7 @@
 #include <osgVis/core/multifocal/MultifocalModule.h>
 #include <osgVis/core/octree/OctreeModule.h>
 
+#include <cstdlib>
 #include <map>
 #include <mutex>
 
@@ -57,7 +58,13 @@ struct Registry
         {
             CdtOptions options;
             options.rule = rule;
-            factories[name] = [options] { return std::make_unique<CdtModule>(options); };
+            factories[name] = [options]() mutable {
+                // Like OSG's own OSG_* variables: a knob for measuring, e.g. the efficacy against
+                // the constraint budget, without rebuilding (docs/cdt.md).
+                if (const char* budget = std::getenv("OSGVIS_CDT_CONSTRAINT_BUDGET"))
+                    options.constraintBudget = std::uint32_t(std::strtoul(budget, nullptr, 10));
+                return std::make_unique<CdtModule>(options);
+            };
         }
         factories["mask-distance"] = []
         {
