@@ -38,7 +38,7 @@ void checkCallbacks(const osgvis_module_callbacks* callbacks, const std::string&
 }
 
 CallbackModule::CallbackModule(const osgvis_module_callbacks& callbacks, void* userData, std::string origin)
-    : _callbacks(callbacks), _origin(std::move(origin))
+    : _callbacks(callbacks), _origin(std::move(origin)), _sceneHandle(std::make_unique<osgvis_scene>())
 {
     checkCallbacks(&callbacks, _origin);
     _name = callbacks.name;
@@ -102,8 +102,8 @@ template <class Call> bool CallbackModule::invoke(const char* callback, Call cal
 void CallbackModule::setScene(const Scene& scene)
 {
     _scene = &scene;
-    const osgvis_scene handle{&scene};
-    _hasScene = invoke("set_scene", [&] { return _callbacks.set_scene(_state, &handle); });
+    _sceneHandle->scene = &scene;
+    _hasScene = invoke("set_scene", [&] { return _callbacks.set_scene(_state, _sceneHandle.get()); });
 }
 
 void CallbackModule::sceneChanged(const SceneChange& change)
@@ -114,13 +114,12 @@ void CallbackModule::sceneChanged(const SceneChange& change)
             setScene(*_scene);
         return;
     }
-    const osgvis_scene handle{_scene};
     const osgvis_change_kind kind = change.kind == SceneChange::Kind::Inserted ? OSGVIS_CHANGE_INSERTED
                                     : change.kind == SceneChange::Kind::Moved  ? OSGVIS_CHANGE_MOVED
                                                                                : OSGVIS_CHANGE_REMOVED;
     // note: a module that missed a change no longer knows the scene; only a new set_scene mends that.
     if (!invoke("scene_changed", [&] {
-            return _callbacks.scene_changed(_state, &handle, kind, change.objects.data(), change.objects.size());
+            return _callbacks.scene_changed(_state, _sceneHandle.get(), kind, change.objects.data(), change.objects.size());
         }))
         _hasScene = false;
 }

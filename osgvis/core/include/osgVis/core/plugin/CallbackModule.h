@@ -9,6 +9,7 @@
 
 #include <osgVis/core/module/VisibilityModule.h>
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -59,6 +60,8 @@ private:
     osgvis_module_callbacks _callbacks;
     std::string _origin, _name;
     void* _state = nullptr;
+    /// The handle set_scene hands out; modules may keep it until the next set_scene (visapi.h).
+    std::unique_ptr<osgvis_scene> _sceneHandle;
     bool _hasScene = false; ///< the last set_scene (or change) succeeded
     VisibleSet _candidates; ///< what the current query started with (reused: no allocation per frame)
     std::string _lastFailure;
