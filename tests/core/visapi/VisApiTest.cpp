@@ -135,25 +135,45 @@ TEST(VisApi, AnswersWhatTheChainAnswersOnTheSameScene)
     }
 }
 
+// The plugin `cfrustum` has no scene_changed: its CallbackModule hands it the scene again.
 TEST(VisApi, SceneChangesReachTheModules)
 {
-    Context context = newContext();
-    for (int i = 0; i < 3; ++i)
-        addUnitBox(context.get(), -5.0 - 2.0 * i); // ids 0 1 2, all in view
-    addUnitBox(context.get(), 5.0);                // id 3, behind the eye
-    ASSERT_EQ(osgvis_context_set_mode(context.get(), "frustum"), OSGVIS_OK);
-    const osgvis_view_desc view = lookDownMinusZ();
-    ASSERT_EQ(osgvis_cull(context.get(), &view), OSGVIS_OK);
-    EXPECT_EQ(visibleIds(context.get()), (std::vector<ObjectId>{0, 1, 2}));
+    for (const char* modes : {"frustum", "cfrustum"})
+    {
+        Context context = newContext();
+        for (int i = 0; i < 3; ++i)
+            addUnitBox(context.get(), -5.0 - 2.0 * i); // ids 0 1 2, all in view
+        addUnitBox(context.get(), 5.0);                // id 3, behind the eye
+        ASSERT_EQ(osgvis_context_set_mode(context.get(), modes), OSGVIS_OK) << osgvis_last_error();
+        const osgvis_view_desc view = lookDownMinusZ();
+        ASSERT_EQ(osgvis_cull(context.get(), &view), OSGVIS_OK);
+        EXPECT_EQ(visibleIds(context.get()), (std::vector<ObjectId>{0, 1, 2})) << modes;
 
-    const double behindMin[3] = {-0.5, -0.5, 9.5}, behindMax[3] = {0.5, 0.5, 10.5};
-    ASSERT_EQ(osgvis_scene_move_object(context.get(), 1, behindMin, behindMax, nullptr, 0), OSGVIS_OK);
-    ASSERT_EQ(osgvis_scene_remove_object(context.get(), 2), OSGVIS_OK);
-    addUnitBox(context.get(), -20.0); // id 4, inserted after the mode was chosen
-    ASSERT_EQ(osgvis_cull(context.get(), &view), OSGVIS_OK);
-    EXPECT_EQ(visibleIds(context.get()), (std::vector<ObjectId>{0, 4}));
-    EXPECT_EQ(osgvis_is_visible(context.get(), 4), 1);
-    EXPECT_EQ(osgvis_is_visible(context.get(), 2), 0);
+        const double behindMin[3] = {-0.5, -0.5, 9.5}, behindMax[3] = {0.5, 0.5, 10.5};
+        ASSERT_EQ(osgvis_scene_move_object(context.get(), 1, behindMin, behindMax, nullptr, 0), OSGVIS_OK);
+        ASSERT_EQ(osgvis_scene_remove_object(context.get(), 2), OSGVIS_OK);
+        addUnitBox(context.get(), -20.0); // id 4, inserted after the mode was chosen
+        ASSERT_EQ(osgvis_cull(context.get(), &view), OSGVIS_OK);
+        EXPECT_EQ(visibleIds(context.get()), (std::vector<ObjectId>{0, 4})) << modes;
+        EXPECT_EQ(osgvis_is_visible(context.get(), 4), 1);
+        EXPECT_EQ(osgvis_is_visible(context.get(), 2), 0);
+    }
+}
+
+// A region answer through the C call: the frustum module answers regions (every direction), so it
+// keeps every object; the query is timed like a view's.
+TEST(VisApi, RegionQuery)
+{
+    Context context = newContext();
+    addUnitBox(context.get(), -5.0);
+    addUnitBox(context.get(), 5.0);
+    ASSERT_EQ(osgvis_context_set_mode(context.get(), "frustum"), OSGVIS_OK);
+    const osgvis_region_desc region{{-1, -1, -1}, {1, 1, 1}, 0.1, 0.2};
+    ASSERT_EQ(osgvis_cull_region(context.get(), &region), OSGVIS_OK) << osgvis_last_error();
+    EXPECT_EQ(visibleIds(context.get()), (std::vector<ObjectId>{0, 1}));
+    osgvis_statistics statistics{};
+    ASSERT_EQ(osgvis_statistics_get(context.get(), &statistics), OSGVIS_OK);
+    EXPECT_GE(statistics.cull_milliseconds, 0.0);
 }
 
 TEST(VisApi, NonFiniteBoundsAreNeverCulled)
