@@ -48,13 +48,15 @@ TEST(BenchPlugin, PluginModeAnswersWhatFrustumAnswers)
     ASSERT_FALSE(digests.empty()) << text;
     EXPECT_EQ(perViewArray(text, "cfrustum", "view_digest"), digests);
     EXPECT_EQ(perViewArray(text, "cfrustum", "view_objects"), perViewArray(text, "frustum", "view_objects"));
-    EXPECT_EQ(perViewArray(text, "cfrustum+octree", "view_digest"), perViewArray(text, "frustum+octree", "view_digest"));
+    EXPECT_EQ(perViewArray(text, "cfrustum+octree", "view_digest"),
+              perViewArray(text, "frustum+octree", "view_digest"));
 }
 
 TEST(BenchPlugin, BrokenPluginStopsTheRunWithItsFileAndReason)
 {
     setenv("OSGVIS_MODULE_PATH", OSGVIS_BROKEN_MODULE_DIR, 1); // the bench inherits it
-    const AppRun run = runApp(OSGVIS_BENCH_EXE, "--generate city --triangles 5000 --modes frustum,frustum+broken-refuses");
+    const AppRun run =
+        runApp(OSGVIS_BENCH_EXE, "--generate city --triangles 5000 --modes frustum,frustum+broken-refuses");
     unsetenv("OSGVIS_MODULE_PATH");
     EXPECT_EQ(run.exitCode, 2) << run.output;
     EXPECT_NE(run.output.find("mode 'broken-refuses': plugin " OSGVIS_BROKEN_MODULE_DIR

@@ -123,16 +123,16 @@ TEST_F(Plugins, FileThatIsNoLibrary)
 TEST_F(Plugins, MissingEntryPoint)
 {
     const std::string error = loadError("frustum+broken-nosymbol");
-    const std::string expected = "mode 'broken-nosymbol': plugin " + brokenPath("nosymbol") +
-                                 ": no entry point osgvis_module_entry (";
+    const std::string expected =
+        "mode 'broken-nosymbol': plugin " + brokenPath("nosymbol") + ": no entry point osgvis_module_entry (";
     EXPECT_EQ(error.rfind(expected, 0), 0u) << error;
     EXPECT_NE(error.find("undefined symbol: osgvis_module_entry"), std::string::npos) << error;
 }
 
 TEST_F(Plugins, WrongApiVersion)
 {
-    EXPECT_EQ(loadError("broken-version"),
-              "mode 'broken-version': plugin " + brokenPath("version") + ": built against visapi 2.0, this osgVis has 1.0");
+    EXPECT_EQ(loadError("broken-version"), "mode 'broken-version': plugin " + brokenPath("version") +
+                                               ": built against visapi 2.0, this osgVis has 1.0");
 }
 
 TEST_F(Plugins, EntryRefuses)
@@ -172,9 +172,8 @@ TEST_F(Plugins, FailingOrThrowingCullKeepsEveryCandidate)
         for (const View& view : views)
             EXPECT_EQ(answer(chain, view), answer(builtIn, view)) << modes;
         EXPECT_EQ(callbackStage(chain, 1).lastFailure(), failure) << modes;
-        EXPECT_EQ(callbackStage(chain, 1).failureCount(), std::string(modes).find("scenefails") != std::string::npos
-                                                              ? 1u
-                                                              : views.size())
+        EXPECT_EQ(callbackStage(chain, 1).failureCount(),
+                  std::string(modes).find("scenefails") != std::string::npos ? 1u : views.size())
             << modes;
     }
 }

@@ -27,8 +27,7 @@ core::Scene randomBoxScene(unsigned seed, int count)
 std::vector<core::View> randomViews(unsigned seed, int count)
 {
     std::mt19937 random(seed);
-    std::uniform_real_distribution<double> eye(-120.0, 120.0), target(-50.0, 50.0), fov(30.0, 90.0),
-        far(50.0, 300.0);
+    std::uniform_real_distribution<double> eye(-120.0, 120.0), target(-50.0, 50.0), fov(30.0, 90.0), far(50.0, 300.0);
     std::vector<core::View> views;
     for (int i = 0; i < count; ++i)
     {

@@ -183,8 +183,8 @@ TEST(VisApi, NonFiniteBoundsAreNeverCulled)
     osgvis_object_desc desc{{nan, 0, 0}, {1, 1, 1}, 0, 0, nullptr, nullptr};
     ASSERT_EQ(osgvis_scene_add_object(context.get(), &desc, nullptr), OSGVIS_OK);
     ASSERT_EQ(osgvis_context_set_mode(context.get(), "frustum"), OSGVIS_OK);
-    const osgvis_view_desc view = viewDesc(makeView(glm::lookAt(Vec3(0, 0, 0), Vec3(0, 0, 10), Vec3(0, 1, 0)),
-                                                    glm::perspective(1.0, 1.0, 0.1, 5.0)));
+    const osgvis_view_desc view = viewDesc(
+        makeView(glm::lookAt(Vec3(0, 0, 0), Vec3(0, 0, 10), Vec3(0, 1, 0)), glm::perspective(1.0, 1.0, 0.1, 5.0)));
     ASSERT_EQ(osgvis_cull(context.get(), &view), OSGVIS_OK);
     EXPECT_EQ(visibleIds(context.get()), (std::vector<ObjectId>{0}));
 }

@@ -28,8 +28,7 @@ osgvis_status failuref(osgvis_status status, const char* format, ...) noexcept
 }
 } // namespace osgVis::core::capi
 
-extern "C"
-{
+// note: C linkage comes from the declarations in osgVis/visapi.h.
 uint32_t osgvis_version(void)
 {
     return OSGVIS_VISAPI_VERSION;
@@ -39,15 +38,24 @@ const char* osgvis_status_name(osgvis_status status)
 {
     switch (status)
     {
-    case OSGVIS_OK: return "OSGVIS_OK";
-    case OSGVIS_ERROR_INVALID_ARGUMENT: return "OSGVIS_ERROR_INVALID_ARGUMENT";
-    case OSGVIS_ERROR_UNKNOWN_MODE: return "OSGVIS_ERROR_UNKNOWN_MODE";
-    case OSGVIS_ERROR_MODULE_LOAD: return "OSGVIS_ERROR_MODULE_LOAD";
-    case OSGVIS_ERROR_MODULE_FAILED: return "OSGVIS_ERROR_MODULE_FAILED";
-    case OSGVIS_ERROR_BAD_STATE: return "OSGVIS_ERROR_BAD_STATE";
-    case OSGVIS_ERROR_UNSUPPORTED: return "OSGVIS_ERROR_UNSUPPORTED";
-    case OSGVIS_ERROR_OUT_OF_MEMORY: return "OSGVIS_ERROR_OUT_OF_MEMORY";
-    case OSGVIS_ERROR_INTERNAL: return "OSGVIS_ERROR_INTERNAL";
+    case OSGVIS_OK:
+        return "OSGVIS_OK";
+    case OSGVIS_ERROR_INVALID_ARGUMENT:
+        return "OSGVIS_ERROR_INVALID_ARGUMENT";
+    case OSGVIS_ERROR_UNKNOWN_MODE:
+        return "OSGVIS_ERROR_UNKNOWN_MODE";
+    case OSGVIS_ERROR_MODULE_LOAD:
+        return "OSGVIS_ERROR_MODULE_LOAD";
+    case OSGVIS_ERROR_MODULE_FAILED:
+        return "OSGVIS_ERROR_MODULE_FAILED";
+    case OSGVIS_ERROR_BAD_STATE:
+        return "OSGVIS_ERROR_BAD_STATE";
+    case OSGVIS_ERROR_UNSUPPORTED:
+        return "OSGVIS_ERROR_UNSUPPORTED";
+    case OSGVIS_ERROR_OUT_OF_MEMORY:
+        return "OSGVIS_ERROR_OUT_OF_MEMORY";
+    case OSGVIS_ERROR_INTERNAL:
+        return "OSGVIS_ERROR_INTERNAL";
     }
     return "unknown status";
 }
@@ -55,5 +63,4 @@ const char* osgvis_status_name(osgvis_status status)
 const char* osgvis_last_error(void)
 {
     return lastErrorText;
-}
 }

@@ -31,8 +31,7 @@ osgvis_status nullHandle(const char* function)
 
 static_assert(sizeof(Triangle) == 9 * sizeof(float), "visapi.h hands out triangles as 9 floats each");
 
-extern "C"
-{
+// note: C linkage comes from the declarations in osgVis/visapi.h.
 uint32_t osgvis_scene_object_count(const osgvis_scene* scene)
 {
     return scene && scene->scene ? static_cast<uint32_t>(scene->scene->objects.size()) : 0;
@@ -143,5 +142,4 @@ osgvis_status osgvis_visible_clear(osgvis_visible* visible, uint32_t id)
         return failuref(OSGVIS_ERROR_INVALID_ARGUMENT, "osgvis_visible_clear: no object %u", id);
     visible->set->clear(id);
     return OSGVIS_OK;
-}
 }

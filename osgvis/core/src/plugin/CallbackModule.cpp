@@ -24,10 +24,8 @@ void checkCallbacks(const osgvis_module_callbacks* callbacks, const std::string&
         throw ModuleLoadFailure(origin + ": built against visapi " + versionText(version) + ", this osgVis has " +
                                 versionText(OSGVIS_VISAPI_VERSION));
     const std::pair<const char*, bool> required[] = {
-        {"name", callbacks->name && *callbacks->name},
-        {"create", callbacks->create != nullptr},
-        {"destroy", callbacks->destroy != nullptr},
-        {"set_scene", callbacks->set_scene != nullptr},
+        {"name", callbacks->name && *callbacks->name}, {"create", callbacks->create != nullptr},
+        {"destroy", callbacks->destroy != nullptr},    {"set_scene", callbacks->set_scene != nullptr},
         {"cull", callbacks->cull != nullptr},
     };
     for (const auto& [field, present] : required)
@@ -118,9 +116,11 @@ void CallbackModule::sceneChanged(const SceneChange& change)
                                     : change.kind == SceneChange::Kind::Moved  ? OSGVIS_CHANGE_MOVED
                                                                                : OSGVIS_CHANGE_REMOVED;
     // note: a module that missed a change no longer knows the scene; only a new set_scene mends that.
-    if (!invoke("scene_changed", [&] {
-            return _callbacks.scene_changed(_state, _sceneHandle.get(), kind, change.objects.data(), change.objects.size());
-        }))
+    if (!invoke("scene_changed",
+                [&] {
+                    return _callbacks.scene_changed(_state, _sceneHandle.get(), kind, change.objects.data(),
+                                                    change.objects.size());
+                }))
         _hasScene = false;
 }
 

@@ -102,7 +102,8 @@ std::vector<std::string> pluginSearchPath()
         while (start <= path.size())
         {
             const std::size_t colon = path.find(':', start);
-            const std::string folder = path.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
+            const std::string folder =
+                path.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
             if (!folder.empty())
                 folders.push_back(folder);
             if (colon == std::string::npos)

@@ -4,7 +4,6 @@
 /// The per-thread message osgvis_last_error() returns: every C entry point that fails sets it.
 #include <osgVis/visapi.h>
 
-
 namespace osgVis::core::capi
 {
 /// Records `message` as this thread's last error and returns `status`, so a failing call can
