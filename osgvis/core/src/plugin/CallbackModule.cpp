@@ -90,7 +90,7 @@ template <class Call> bool CallbackModule::invoke(const char* callback, Call cal
     }
     const std::string failure = std::string(callback) + " failed: " + why;
     ++_failures;
-    if (failure != _lastFailure) // note: once per distinct failure, not once per frame
+    if (failure != _lastFailure) // note: a failure repeated every frame is printed once
         std::cerr << "osgVis: module '" << _name << "' (" << _origin << "): " << failure
                   << "; it culls nothing until it succeeds\n";
     _lastFailure = failure;

@@ -51,8 +51,8 @@ public:
     std::size_t failureCount() const { return _failures; }
 
 private:
-    /// Runs one callback; false (with lastFailure set and reported once on stderr) when it returns a
-    /// failure status or throws.
+    /// Runs one callback; false when it returns a failure status or throws, with lastFailure set
+    /// (and printed on stderr when it differs from the previous failure).
     template <class Call> bool invoke(const char* callback, Call call);
     /// A query with the candidates restored when the module fails, so failing costs no visibility.
     template <class Call> void query(const char* callback, VisibleSet& visible, Call call);
