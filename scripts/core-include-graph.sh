@@ -21,12 +21,15 @@ fi
 cxx=${CXX:-c++}
 
 # Layer of each folder: an arrow A -> B is allowed only when B's layer is lower than A's.
-layers='geometry:0 scene:1 spatial:2 occluders:2 pvs:3 module:3
-frustum:4 octree:4 cellportal:4 mask:4 multifocal:4 cdt:4 api:5 async:6'
+# The C header osgVis/visapi.h belongs to capi/ (its accessors); plugin/ (modules behind the C
+# callbacks) is a method; visapi/ (the renderer side of the C interface) sits on the registry.
+layers='geometry:0 scene:1 spatial:2 occluders:2 pvs:3 module:3 capi:3
+frustum:4 octree:4 cellportal:4 mask:4 multifocal:4 cdt:4 plugin:4 api:5 async:6 visapi:6'
 
 # Folder of a path under the core ("-" for the forwarding headers at the old flat paths).
 folder_of() {
     case "$1" in
+        "$root"/include/osgVis/visapi.h) echo capi ;;
         "$root"/include/osgVis/core/*/*) local rest=${1#"$root"/include/osgVis/core/}; echo "${rest%%/*}" ;;
         "$root"/src/*/*) local rest=${1#"$root"/src/}; echo "${rest%%/*}" ;;
         *) echo "-" ;;
@@ -35,7 +38,7 @@ folder_of() {
 
 deps=$(mktemp)
 trap '[ -n "${KEEP_DEPS:-}" ] && cp "$deps" "$KEEP_DEPS"; rm -f "$deps"' EXIT
-files=$(find "$root/src" "$root/include/osgVis/core" -mindepth 2 \( -name '*.cpp' -o -name '*.h' \) | sort)
+files=$( (find "$root/src" "$root/include/osgVis/core" -mindepth 2 \( -name '*.cpp' -o -name '*.h' \); [ -f "$root/include/osgVis/visapi.h" ] && echo "$root/include/osgVis/visapi.h") | sort)
 [ -n "$files" ] || { echo "core-include-graph: no sources under $root" >&2; exit 2; }
 for file in $files; do
     # One line per file: the file, then every non-system header it reaches, as absolute paths.
@@ -50,6 +53,7 @@ done
 # file -> folder for every file and dependency seen.
 awk -v root="$root" -v layers="$layers" '
 function folder(p,   rest) {
+    if (p == root "/include/osgVis/visapi.h") return "capi"
     if (index(p, root "/include/osgVis/core/") == 1) { rest = substr(p, length(root "/include/osgVis/core/") + 1) }
     else if (index(p, root "/src/") == 1) { rest = substr(p, length(root "/src/") + 1) }
     else return "-"
@@ -94,7 +98,7 @@ END {
         if (line) printf "  %-10s -> %s\n", a, line
         else printf "  %-10s    (includes no other folder)\n", a
     }
-    print "layers, lowest first: geometry | scene | spatial, occluders | pvs, module | frustum, octree, cellportal, mask, multifocal, cdt (methods) | api | async"
+    print "layers, lowest first: geometry | scene | spatial, occluders | pvs, module, capi | frustum, octree, cellportal, mask, multifocal, cdt, plugin (methods) | api | async, visapi"
     if (bad) { print "include layers: VIOLATED (see above)"; exit 1 }
     print "include layers: ok (every include, direct or not, points to a lower layer; no arrow between methods)"
 }' "$deps"

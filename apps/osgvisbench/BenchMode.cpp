@@ -24,6 +24,10 @@ BenchMode chainMode(const std::string& name)
         const core::ModuleChain chain = core::createChain(mode.chain);
         mode.conservative = !chain.approximate() && name.find("approx") == std::string::npos;
     }
+    catch (const core::ModuleLoadError& e)
+    {
+        throw UnknownBenchModeError(e.what()); // names the plugin file and why it cannot be used
+    }
     catch (const core::UnknownModeError& e)
     {
         throw UnknownBenchModeError("unknown mode '" + name + "' (" + e.what() + "); valid modes: " + validModeList() +

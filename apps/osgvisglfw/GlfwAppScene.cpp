@@ -74,13 +74,18 @@ CulledScene cullWithMode(osg::Node* model, const std::string& mode)
     {
         group->setModes(mode);
     }
+    catch (const core::ModuleLoadError&)
+    {
+        throw; // a plugin was found but is unusable: its message names the file and the reason
+    }
     catch (const core::UnknownModeError&)
     {
         std::string known = OsgMode;
         for (const std::string& name : core::moduleNames())
             known += ", " + name;
         throw core::UnknownModeError("unknown mode '" + mode + "'; modes: " + known +
-                                     " (chain modules with +, e.g. frustum+octree)");
+                                     " (chain modules with +, e.g. frustum+octree; a plugin osgvis_module_<name>.so on OSGVIS_MODULE_PATH "
+                                     "or in lib/osgvis-modules is a mode too)");
     }
     group->addChild(model);
     return {group, group};

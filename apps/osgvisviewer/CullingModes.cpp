@@ -28,13 +28,18 @@ void checkMode(const std::string& mode)
     {
         core::createChain(mode);
     }
+    catch (const core::ModuleLoadError&)
+    {
+        throw; // a plugin was found but is unusable: its message names the file and the reason
+    }
     catch (const core::UnknownModeError&)
     {
         std::string list;
         for (const std::string& name : cyclingModes())
             list += (list.empty() ? "" : ", ") + name;
         throw core::UnknownModeError("unknown mode '" + mode + "'; modes: " + list +
-                                     " (chain modules with +, e.g. frustum+octree)");
+                                     " (chain modules with +, e.g. frustum+octree; a plugin osgvis_module_<name>.so on OSGVIS_MODULE_PATH "
+                                     "or in lib/osgvis-modules is a mode too)");
     }
 }
 

@@ -126,6 +126,8 @@ std::string usageText(const std::string& programName)
            "\n"
            "  SCENE              model file; its walk is SCENE's stem + .walk when that file exists\n"
            "  --mode M           osg (OSG's own culling) or a module chain, e.g. frustum or frustum+octree\n"
+           "                     (a name osgVis lacks loads the plugin osgvis_module_<name>.so from\n"
+           "                     OSGVIS_MODULE_PATH or lib/osgvis-modules)\n"
            "                     (default frustum; cellportal for a .pvs); an unknown mode lists the known ones\n"
            "  --walk FILE|auto|orbit  walk file (docs/walk-format.md), auto (eyes at a person's height in\n"
            "                     the model's free space) or orbit (around it); default: the walk beside\n"

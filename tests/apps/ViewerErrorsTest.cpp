@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -24,6 +25,20 @@ TEST(ViewerErrors, UnknownModeListsTheModes)
     EXPECT_NE(run.output.find("osg"), std::string::npos) << run.output;
     for (const std::string& module : osgVis::core::moduleNames())
         EXPECT_NE(run.output.find(module), std::string::npos) << "mode list lacks " << module << ":\n" << run.output;
+}
+
+// A plugin that is found but unusable is named with its reason, not reported as an unknown mode.
+TEST(ViewerErrors, BrokenPluginModeNamesTheFileAndReason)
+{
+    setenv("OSGVIS_MODULE_PATH", OSGVIS_BROKEN_MODULE_DIR, 1); // the viewer inherits it
+    const auto run = runViewer("--generate office --triangles 2000 --mode frustum+broken-nocull");
+    unsetenv("OSGVIS_MODULE_PATH");
+    EXPECT_NE(run.exitCode, 0);
+    EXPECT_LT(run.exitCode, 128) << "must not crash: " << run.output;
+    EXPECT_NE(run.output.find("mode 'broken-nocull': plugin " OSGVIS_BROKEN_MODULE_DIR
+                              "/osgvis_module_broken-nocull.so: the callback table has no cull"),
+              std::string::npos)
+        << run.output;
 }
 
 TEST(ViewerErrors, MissingModelIsNamed)

@@ -6,7 +6,8 @@ build=$1 src=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
 prefix=$work/prefix
 cmake --install "$build" --prefix "$prefix" >"$work/install.log"
-for f in include/osgVis/VisibilityGroup include/osgVis/core/module/VisibilityModule.h \
+for f in include/osgVis/VisibilityGroup include/osgVis/core/module/VisibilityModule.h include/osgVis/visapi.h \
+         lib/osgvis-modules/osgvis_module_cfrustum.so \
          lib/cmake/osgVis/osgVisConfig.cmake lib/pkgconfig/osgVis.pc; do
     [ -e "$prefix/$f" ] || { echo "installed tree lacks $f" >&2; exit 1; }
 done
@@ -48,6 +49,13 @@ c++ -std=c++17 "$src/main.cpp" -o "$work/pc_consumer" $flags -Wl,-rpath,"$prefix
 out=$("$work/pc_consumer")
 echo "$out"
 grep -q "consumer ok" <<<"$out"
+
+echo "== a C99 program on the C interface (visapi.h), its plugin mode found beside the installed library"
+cc -std=c99 -pedantic -Wall -Wextra -Werror "$src/visapi_consumer.c" -o "$work/visapi_consumer" -I"$prefix/include" \
+    -L"$prefix/lib" -losgVisCore -Wl,-rpath,"$prefix/lib"
+out=$(env -u OSGVIS_MODULE_PATH "$work/visapi_consumer")
+echo "$out"
+grep -q "visapi consumer ok (1 visible)" <<<"$out"
 
 echo "== stock osgconv with the installed plugins"
 if command -v osgconv >/dev/null; then

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/core/frustum/FrustumModule.h>
 #include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/plugin/PluginModules.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -94,7 +95,11 @@ TEST(ModuleRegistry, UnknownModeNamesTheKnownOnes)
     }
     catch (const UnknownModeError& e)
     {
-        EXPECT_EQ(std::string(e.what()), "unknown mode 'foo' (known: " + knownList() + ")");
+        std::string searched;
+        for (const std::string& folder : pluginSearchPath())
+            searched += (searched.empty() ? "" : ", ") + folder;
+        EXPECT_EQ(std::string(e.what()),
+                  "unknown mode 'foo' (known: " + knownList() + "; no plugin osgvis_module_foo.so in " + searched + ")");
         EXPECT_NE(std::string(e.what()).find("frustum"), std::string::npos);
     }
     EXPECT_THROW(createChain("frustum,foo"), UnknownModeError);

@@ -7,6 +7,8 @@
 #include <osgVis/core/mask/MaskModule.h>
 #include <osgVis/core/multifocal/MultifocalModule.h>
 #include <osgVis/core/octree/OctreeModule.h>
+#include <osgVis/core/plugin/CallbackModule.h>
+#include <osgVis/core/plugin/PluginModules.h>
 
 #include <cstdlib>
 #include <map>
@@ -143,9 +145,19 @@ std::unique_ptr<VisibilityModule> createModule(const std::string& name)
         if (found != r.factories.end())
             factory = found->second;
     }
-    if (!factory)
-        throw UnknownModeError("unknown mode '" + name + "' (known: " + joined(moduleNames()) + ")");
-    return factory();
+    try
+    {
+        if (factory)
+            return factory();
+        if (std::unique_ptr<VisibilityModule> plugin = loadPluginModule(name))
+            return plugin;
+    }
+    catch (const ModuleLoadFailure& e)
+    {
+        throw ModuleLoadError("mode '" + name + "': " + e.what());
+    }
+    throw UnknownModeError("unknown mode '" + name + "' (known: " + joined(moduleNames()) + "; no plugin " +
+                           pluginFileName(name) + " in " + joined(pluginSearchPath()) + ")");
 }
 
 ModuleChain createChain(const std::string& names)
