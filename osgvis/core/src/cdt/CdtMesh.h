@@ -61,6 +61,13 @@ struct Occluder
     AffineNearness nearness;
 };
 
+/// An occluder edge a→b as containedIn() needs it: a, b - a and the slack |dx| + |dy| of its
+/// half-plane moved out by [-1/2, 1/2]^2 (all exact integers, computed once per occluder).
+struct OccluderEdge
+{
+    std::int64_t ax, ay, dx, dy, slack;
+};
+
 struct EdgeRef
 {
     std::int32_t t = -1, side = -1;
@@ -79,6 +86,7 @@ struct CoverageTriangulation::Impl
     std::vector<OriginalSegment> originals;
     std::vector<Occluder> occluders;
     std::vector<GridPoint> occluderPoints;
+    std::vector<OccluderEdge> occluderEdges; ///< parallel to occluderPoints: the edge from each point
     std::int32_t x0 = 0, y0 = 0, x1 = 1, y1 = 1;
     std::uint32_t budget = 0;
     std::uint32_t budgetUsed = 0;
