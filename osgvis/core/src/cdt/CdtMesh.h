@@ -125,14 +125,25 @@ struct CoverageTriangulation::Impl
     void flip(std::int32_t t, int side);
     void legalize();
     void setNeighbour(std::int32_t t, std::int32_t oldN, std::int32_t newN);
-    int indexOf(std::int32_t t, std::int32_t v) const;
+    // note: inline (here, not in CdtMesh.cpp) because every file of the record calls them in its hot loops.
+    int indexOf(std::int32_t t, std::int32_t v) const
+    {
+        const Triangle& tr = tris[t];
+        return tr.v[0] == v ? 0 : tr.v[1] == v ? 1 : tr.v[2] == v ? 2 : -1;
+    }
 
     // CdtConstraints.cpp
     /// Inserts the pieces of originals[original] from vertex p to vertex q. False when it gave up.
     bool insertSegment(std::int32_t p, std::int32_t q, std::int32_t original);
     bool insertPieceByFlips(std::int32_t p, std::int32_t q, std::int32_t original);
     void markConstraint(EdgeRef e, std::int32_t original, bool on);
-    std::int32_t farVertex(std::int32_t t, std::int32_t u, std::int32_t w) const;
+    std::int32_t farVertex(std::int32_t t, std::int32_t u, std::int32_t w) const
+    {
+        for (int i = 0; i < 3; ++i)
+            if (tris[t].v[i] != u && tris[t].v[i] != w)
+                return tris[t].v[i];
+        return -1;
+    }
 
     // CdtCoverage.cpp
     bool containedIn(std::int32_t t, const Occluder& o) const;
