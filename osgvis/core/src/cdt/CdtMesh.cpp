@@ -72,10 +72,11 @@ std::int32_t CoverageTriangulation::Impl::locateScaled(std::int64_t X, std::int6
         const int start = int((randomState >> 16) % 3);
         const Triangle& tr = tris[t];
         int next = -1;
+        static constexpr int Mod3[5] = {0, 1, 2, 0, 1};
         for (int k = 0; k < 3; ++k)
         {
-            const int i = (start + k) % 3;
-            if (orientScaled(points[tr.v[(i + 1) % 3]], points[tr.v[(i + 2) % 3]], X, Y) < 0)
+            const int i = Mod3[start + k];
+            if (orientScaled(points[tr.v[Mod3[i + 1]]], points[tr.v[Mod3[i + 2]]], X, Y) < 0)
             {
                 next = i;
                 break;
