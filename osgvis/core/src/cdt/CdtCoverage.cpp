@@ -62,20 +62,21 @@ bool convexPositive(const GridPoint* p, std::size_t n, std::size_t& i0)
 
 bool CoverageTriangulation::Impl::containedIn(std::int32_t t, const Occluder& o) const
 {
-    const GridPoint* q = occluderPoints.data() + o.first;
+    const Triangle& tr = tris[t];
+    const GridPoint p[3] = {points[tr.v[0]], points[tr.v[1]], points[tr.v[2]]};
+    // note: integer points; x >= minX - 1/2 is x >= minX. The box first: it rejects most.
     for (int k = 0; k < 3; ++k)
-    {
-        const GridPoint p = points[tris[t].v[k]];
-        // note: integer points; x >= minX - 1/2 is x >= minX.
-        if (p.x < o.minX || p.x > o.maxX || p.y < o.minY || p.y > o.maxY)
+        if (p[k].x < o.minX || p[k].x > o.maxX || p[k].y < o.minY || p[k].y > o.maxY)
             return false;
-        for (std::uint32_t j = 0; j < o.count; ++j)
-        {
-            const GridPoint a = q[j], b = q[(j + 1) % o.count];
-            const std::int64_t dx = std::int64_t(b.x) - a.x, dy = std::int64_t(b.y) - a.y;
-            if (2 * orient(a, b, p) < -(std::abs(dx) + std::abs(dy)))
+    const OccluderEdge* e = occluderEdges.data() + o.first;
+    for (std::uint32_t j = 0; j < o.count; ++j)
+    {
+        // 2·orient(a, b, p) >= -(|dx| + |dy|): the same exact integer test as the half-plane of the
+        // Minkowski sum.
+        const OccluderEdge& g = e[j];
+        for (int k = 0; k < 3; ++k)
+            if (2 * (g.dx * (p[k].y - g.ay) - g.dy * (p[k].x - g.ax)) < -g.slack)
                 return false;
-        }
     }
     return true;
 }
@@ -169,6 +170,7 @@ void CoverageTriangulation::reset(std::int32_t x0, std::int32_t y0, std::int32_t
     m.originals.clear();
     m.occluders.clear();
     m.occluderPoints.clear();
+    m.occluderEdges.clear();
     m.budgetUsed = 0;
     m.roundingFallbacks = 0;
     m.randomState = 1;
@@ -250,6 +252,9 @@ bool CoverageTriangulation::insertOccluder(const GridPoint* ccw, std::size_t cou
     for (std::size_t i = 0; i < count; ++i)
     {
         m.occluderPoints.push_back(ccw[i]);
+        const GridPoint a = ccw[i], b = ccw[(i + 1) % count];
+        const std::int64_t dx = std::int64_t(b.x) - a.x, dy = std::int64_t(b.y) - a.y;
+        m.occluderEdges.push_back({a.x, a.y, dx, dy, std::abs(dx) + std::abs(dy)});
         o.minX = std::min<std::int64_t>(o.minX, ccw[i].x), o.maxX = std::max<std::int64_t>(o.maxX, ccw[i].x);
         o.minY = std::min<std::int64_t>(o.minY, ccw[i].y), o.maxY = std::max<std::int64_t>(o.maxY, ccw[i].y);
     }

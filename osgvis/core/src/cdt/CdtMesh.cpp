@@ -36,20 +36,6 @@ void CoverageTriangulation::Impl::resetMesh(std::int32_t ax, std::int32_t ay, st
     std::fill(bucketVertex, bucketVertex + Buckets * Buckets, -1);
 }
 
-std::int32_t CoverageTriangulation::Impl::farVertex(std::int32_t t, std::int32_t u, std::int32_t w) const
-{
-    for (int i = 0; i < 3; ++i)
-        if (tris[t].v[i] != u && tris[t].v[i] != w)
-            return tris[t].v[i];
-    return -1;
-}
-
-int CoverageTriangulation::Impl::indexOf(std::int32_t t, std::int32_t v) const
-{
-    const Triangle& tr = tris[t];
-    return tr.v[0] == v ? 0 : tr.v[1] == v ? 1 : tr.v[2] == v ? 2 : -1;
-}
-
 EdgeRef CoverageTriangulation::Impl::findEdge(std::int32_t u, std::int32_t w) const
 {
     // Rotate around u one way, then the other (the border stops a rotation).
@@ -58,13 +44,16 @@ EdgeRef CoverageTriangulation::Impl::findEdge(std::int32_t u, std::int32_t w) co
         std::int32_t t = pointTriangle[u];
         for (std::size_t guard = 0; t >= 0 && guard <= tris.size(); ++guard)
         {
+            static constexpr int Next[3] = {1, 2, 0}, Prev[3] = {2, 0, 1};
             const int i = indexOf(t, u);
+            if (i < 0)
+                return {};
             const Triangle& tr = tris[t];
-            if (tr.v[(i + 1) % 3] == w)
-                return {t, (i + 2) % 3};
-            if (tr.v[(i + 2) % 3] == w)
-                return {t, (i + 1) % 3};
-            t = dir == 0 ? tr.n[(i + 1) % 3] : tr.n[(i + 2) % 3];
+            if (tr.v[Next[i]] == w)
+                return {t, Prev[i]};
+            if (tr.v[Prev[i]] == w)
+                return {t, Next[i]};
+            t = tr.n[dir == 0 ? Next[i] : Prev[i]];
             if (t == pointTriangle[u])
                 return {};
         }
@@ -83,10 +72,11 @@ std::int32_t CoverageTriangulation::Impl::locateScaled(std::int64_t X, std::int6
         const int start = int((randomState >> 16) % 3);
         const Triangle& tr = tris[t];
         int next = -1;
+        static constexpr int Mod3[5] = {0, 1, 2, 0, 1};
         for (int k = 0; k < 3; ++k)
         {
-            const int i = (start + k) % 3;
-            if (orientScaled(points[tr.v[(i + 1) % 3]], points[tr.v[(i + 2) % 3]], X, Y) < 0)
+            const int i = Mod3[start + k];
+            if (orientScaled(points[tr.v[Mod3[i + 1]]], points[tr.v[Mod3[i + 2]]], X, Y) < 0)
             {
                 next = i;
                 break;

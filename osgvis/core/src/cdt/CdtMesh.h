@@ -61,6 +61,13 @@ struct Occluder
     AffineNearness nearness;
 };
 
+/// An occluder edge a→b as containedIn() needs it: a, b - a and the slack |dx| + |dy| of its
+/// half-plane moved out by [-1/2, 1/2]^2 (all exact integers, computed once per occluder).
+struct OccluderEdge
+{
+    std::int64_t ax, ay, dx, dy, slack;
+};
+
 struct EdgeRef
 {
     std::int32_t t = -1, side = -1;
@@ -79,6 +86,7 @@ struct CoverageTriangulation::Impl
     std::vector<OriginalSegment> originals;
     std::vector<Occluder> occluders;
     std::vector<GridPoint> occluderPoints;
+    std::vector<OccluderEdge> occluderEdges; ///< parallel to occluderPoints: the edge from each point
     std::int32_t x0 = 0, y0 = 0, x1 = 1, y1 = 1;
     std::uint32_t budget = 0;
     std::uint32_t budgetUsed = 0;
@@ -117,14 +125,25 @@ struct CoverageTriangulation::Impl
     void flip(std::int32_t t, int side);
     void legalize();
     void setNeighbour(std::int32_t t, std::int32_t oldN, std::int32_t newN);
-    int indexOf(std::int32_t t, std::int32_t v) const;
+    // note: inline (here, not in CdtMesh.cpp) because every file of the record calls them in its hot loops.
+    int indexOf(std::int32_t t, std::int32_t v) const
+    {
+        const Triangle& tr = tris[t];
+        return tr.v[0] == v ? 0 : tr.v[1] == v ? 1 : tr.v[2] == v ? 2 : -1;
+    }
 
     // CdtConstraints.cpp
     /// Inserts the pieces of originals[original] from vertex p to vertex q. False when it gave up.
     bool insertSegment(std::int32_t p, std::int32_t q, std::int32_t original);
     bool insertPieceByFlips(std::int32_t p, std::int32_t q, std::int32_t original);
     void markConstraint(EdgeRef e, std::int32_t original, bool on);
-    std::int32_t farVertex(std::int32_t t, std::int32_t u, std::int32_t w) const;
+    std::int32_t farVertex(std::int32_t t, std::int32_t u, std::int32_t w) const
+    {
+        for (int i = 0; i < 3; ++i)
+            if (tris[t].v[i] != u && tris[t].v[i] != w)
+                return tris[t].v[i];
+        return -1;
+    }
 
     // CdtCoverage.cpp
     bool containedIn(std::int32_t t, const Occluder& o) const;
