@@ -3,8 +3,16 @@
 // convex quads inserted as occluders, a fresh frame each time; items/s = occluders/s, the
 // `constraints/s` counter = input constraint edges/s) and coverage queries (random axis-aligned
 // and rotated quads against the finished record; items/s = queries/s), for 64, 256 and 2000
-// occluders on a 1024 x 1024 screen scaled to a 2^20 grid.
+// occluders on a 1024 x 1024 screen scaled to a 2^20 grid. And the whole cdt cull on the test city
+// (tests/core/support/BoxScenes), walking its own kd-tree or the renderer's hierarchy handed over
+// as Scene::hierarchy (visibility API, ordered traversal by callback): the same kd-tree (the sets
+// are identical, tests CdtHierarchy), or a BVH walked under the depth-only rule.
+#include "BoxScenes.h"
+#include "RegionSampling.h"
+
+#include <osgVis/core/cdt/CdtModule.h>
 #include <osgVis/core/cdt/CoverageTriangulation.h>
+#include <osgVis/core/spatial/DisjointCellTree.h>
 
 #include <benchmark/benchmark.h>
 
@@ -84,8 +92,53 @@ void BM_CdtQueries(benchmark::State& state)
     state.SetItemsProcessed(state.iterations());
     state.counters["hidden%"] = total ? 100.0 * double(hiddenCount) / double(total) : 0.0;
 }
+enum class Walked
+{
+    OwnTree,
+    RendererKdTree,
+};
+
+void BM_CdtCullCity(benchmark::State& state)
+{
+    using namespace osgVis::core;
+    osgVis::test::City city = osgVis::test::makeCity();
+    if (Walked(state.range(0)) == Walked::RendererKdTree)
+    {
+        std::vector<Aabb> bounds;
+        for (const SceneObject& o : city.scene.objects)
+            bounds.push_back(o.bounds);
+        auto tree = std::make_shared<DisjointCellTree>();
+        tree->build(bounds, std::vector<bool>(bounds.size(), true), 1);
+        city.scene.hierarchy = tree;
+    }
+    CdtModule module;
+    module.setScene(city.scene);
+    std::vector<View> views;
+    for (int i = 0; i < 30; ++i)
+        views.push_back(osgVis::test::lookFrom({-5.0 + 30.0 * (i % 6), -5.0 + 6.0 * i, 1.7},
+                                               {std::sin(0.7 * i), std::cos(0.7 * i), -0.05}, {0, 0, 1}, 60.0, 640, 480));
+    VisibleSet visible;
+    std::size_t kept = 0;
+    for (const View& view : views)
+    {
+        visible.reset(city.scene.objects.size(), true);
+        module.cull(view, visible);
+        kept += visible.count();
+    }
+    std::size_t i = 0;
+    for (auto _ : state)
+    {
+        visible.reset(city.scene.objects.size(), true);
+        module.cull(views[i++ % views.size()], visible);
+        benchmark::DoNotOptimize(visible.count());
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.SetLabel(module.walksSceneHierarchy() ? "renderer's kd-tree" : "own kd-tree");
+    state.counters["visible/view"] = double(kept) / double(views.size()); // over the 30 views, once
+}
 } // namespace
 
+BENCHMARK(BM_CdtCullCity)->Arg(int(Walked::OwnTree))->Arg(int(Walked::RendererKdTree))->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CdtInsertOccluders)->Arg(64)->Arg(256)->Arg(2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CdtQueries)->Arg(64)->Arg(256)->Arg(2000)->Unit(benchmark::kMicrosecond);
 

@@ -132,7 +132,8 @@ TEST_F(Plugins, MissingEntryPoint)
 TEST_F(Plugins, WrongApiVersion)
 {
     EXPECT_EQ(loadError("broken-version"), "mode 'broken-version': plugin " + brokenPath("version") +
-                                               ": built against visapi 2.0, this osgVis has 1.0");
+                                               ": built against visapi 2.0, this osgVis has 1." +
+                                               std::to_string(OSGVIS_VISAPI_VERSION_MINOR));
 }
 
 TEST_F(Plugins, EntryRefuses)

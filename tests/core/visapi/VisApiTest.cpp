@@ -1,16 +1,22 @@
 // SPDX-License-Identifier: MIT
 // The renderer side of osgVis/visapi.h: a scene described through the C calls culls to exactly the
 // sets the C++ chain answers on the same core Scene; scene changes reach the modules; every misuse
-// gives its status and message.
+// gives its status and message; a renderer's hierarchy, attributes and meshes reach the modules.
+#include "BoxScenes.h"
 #include "RandomBoxScene.h"
+#include "RegionSampling.h"
 
 #include <osgVis/visapi.h>
 
 #include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/spatial/DisjointCellTree.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <memory>
 
 using namespace osgVis::core;
@@ -219,4 +225,229 @@ TEST(VisApi, MisuseGivesStatusAndMessage)
     ASSERT_EQ(osgvis_context_set_mode(context.get(), "cfrustum"), OSGVIS_OK) << osgvis_last_error();
     EXPECT_EQ(osgvis_cull_region(context.get(), &region), OSGVIS_ERROR_UNSUPPORTED);
     EXPECT_STREQ(osgvis_last_error(), "osgvis_cull_region: mode 'cfrustum' has no region answers");
+}
+
+namespace
+{
+// The renderer's side of a hierarchy handed over by callback: a kd-tree it built (the same builder
+// the cdt module uses for its own tree), walked by the renderer's own code.
+struct RendererTree
+{
+    DisjointCellTree tree;
+    int traversals = 0;
+    bool destroyed = false;
+
+    static void walk(const RendererTree& self, std::uint32_t index, const double eye[3], const osgvis_hierarchy_visitor* v)
+    {
+        const DisjointCellTree::Node& n = self.tree.node(index);
+        osgvis_hierarchy_node node{};
+        node.id = index;
+        copy(n.cell.min, node.region_min);
+        copy(n.cell.max, node.region_max);
+        node.objects = self.tree.objects().data() + n.firstObject;
+        node.object_count = n.objectCount;
+        if (!v->enter(v->state, &node))
+            return;
+        if (!n.leaf())
+        {
+            const bool lowFirst = eye[n.axis] < n.split;
+            walk(self, lowFirst ? n.left : n.right, eye, v);
+            walk(self, lowFirst ? n.right : n.left, eye, v);
+        }
+        v->leave(v->state, &node);
+    }
+    static void traverse(void* user, const double eye[3], const osgvis_hierarchy_visitor* visitor)
+    {
+        auto& self = *static_cast<RendererTree*>(user);
+        ++self.traversals;
+        walk(self, 0, eye, visitor);
+    }
+    static void destroy(void* user) { static_cast<RendererTree*>(user)->destroyed = true; }
+
+    osgvis_hierarchy_desc desc()
+    {
+        return {OSGVIS_HIERARCHY_DISJOINT, tree.nodeCount(), this, &RendererTree::traverse, &RendererTree::destroy};
+    }
+};
+
+RendererTree rendererTree(const Scene& scene)
+{
+    std::vector<Aabb> bounds;
+    for (const SceneObject& o : scene.objects)
+        bounds.push_back(o.bounds);
+    RendererTree t;
+    t.tree.build(bounds, std::vector<bool>(bounds.size(), true), 1);
+    return t;
+}
+} // namespace
+
+TEST(VisApi, CdtOnTheRenderersHierarchyAnswersItsOwnTreesSets)
+{
+    const osgVis::test::City city = osgVis::test::makeCity();
+    const std::vector<View> views = osgVis::test::randomViews(31, 30);
+    std::vector<View> streetViews = views;
+    for (int i = 0; i < 30; ++i)
+        streetViews.push_back(osgVis::test::lookFrom({-5.0 + 30.0 * (i % 6), -5.0 + 6.0 * i, 1.7},
+                                                     {std::sin(0.7 * i), std::cos(0.7 * i), -0.05}, {0, 0, 1}, 60.0, 160, 120));
+    RendererTree tree = rendererTree(city.scene);
+    Context own = newContext(), walked = newContext();
+    describe(own.get(), city.scene);
+    describe(walked.get(), city.scene);
+    const osgvis_hierarchy_desc desc = tree.desc();
+    ASSERT_EQ(osgvis_scene_set_hierarchy(walked.get(), &desc), OSGVIS_OK) << osgvis_last_error();
+    for (osgvis_context* c : {own.get(), walked.get()})
+        ASSERT_EQ(osgvis_context_set_mode(c, "frustum+cdt"), OSGVIS_OK) << osgvis_last_error();
+    const int checkingTraversals = tree.traversals;
+    EXPECT_EQ(checkingTraversals, 1) << "set_mode walks the hierarchy once to check it";
+    double ownMs = 0.0, walkedMs = 0.0;
+    std::size_t culled = 0;
+    for (std::size_t v = 0; v < streetViews.size(); ++v)
+    {
+        const osgvis_view_desc d = viewDesc(streetViews[v]);
+        ASSERT_EQ(osgvis_cull(own.get(), &d), OSGVIS_OK);
+        ASSERT_EQ(osgvis_cull(walked.get(), &d), OSGVIS_OK);
+        const std::vector<ObjectId> expected = visibleIds(own.get());
+        EXPECT_EQ(visibleIds(walked.get()), expected) << "view " << v;
+        culled += city.scene.objects.size() - expected.size();
+        osgvis_statistics a{}, b{};
+        osgvis_statistics_get(own.get(), &a);
+        osgvis_statistics_get(walked.get(), &b);
+        ownMs += a.cull_milliseconds;
+        walkedMs += b.cull_milliseconds;
+    }
+    EXPECT_GT(tree.traversals, checkingTraversals) << "the cull walked the renderer's tree";
+    EXPECT_GT(culled, streetViews.size() * 100) << "cdt culls on these views";
+    std::printf("[ cdt ] %zu views: own tree %.3f ms/view, renderer's tree by callback %.3f ms/view\n",
+                streetViews.size(), ownMs / double(streetViews.size()), walkedMs / double(streetViews.size()));
+    walked.reset();
+    EXPECT_TRUE(tree.destroyed) << "the context let the renderer free its hierarchy";
+}
+
+namespace
+{
+// An in-process module that reads what the renderer attached: attributes, meshes, the hierarchy.
+struct Seen
+{
+    std::string sceneUnits;
+    int weightFound = 0;
+    std::uint32_t weight = 0;
+    osgvis_status closedStatus = OSGVIS_ERROR_INTERNAL, openStatus = OSGVIS_OK;
+    std::uint32_t closedEdges = 0;
+    std::string openReason;
+    int hasHierarchy = -1;
+    int nodesEntered = 0;
+};
+Seen seen;
+
+int countEnter(void* state, const osgvis_hierarchy_node*)
+{
+    ++*static_cast<int*>(state);
+    return 1;
+}
+
+osgvis_status readScene(void*, const osgvis_scene* scene)
+{
+    const void* data = nullptr;
+    size_t size = 0;
+    if (osgvis_scene_attribute(scene, OSGVIS_INVALID_OBJECT, "units", &data, &size))
+        seen.sceneUnits.assign(static_cast<const char*>(data), size);
+    seen.weightFound = osgvis_scene_attribute(scene, 1, "weight", &data, &size);
+    if (seen.weightFound && size == sizeof seen.weight)
+        std::memcpy(&seen.weight, data, size);
+    const double corner[3] = {3.0, 3.0, 3.0};
+    uint32_t edges[64];
+    seen.closedStatus = osgvis_scene_silhouette(scene, 0, corner, edges, 32, &seen.closedEdges);
+    uint32_t count = 0;
+    seen.openStatus = osgvis_scene_silhouette(scene, 1, corner, edges, 32, &count);
+    seen.openReason = osgvis_last_error();
+    seen.hasHierarchy = osgvis_scene_hierarchy(scene, nullptr, nullptr);
+    if (seen.hasHierarchy)
+    {
+        const osgvis_hierarchy_visitor visitor{&seen.nodesEntered, countEnter, nullptr};
+        osgvis_scene_traverse(scene, corner, &visitor);
+    }
+    return OSGVIS_OK;
+}
+
+void* noState(void*)
+{
+    static int state;
+    return &state;
+}
+void noDestroy(void*) {}
+osgvis_status keepAll(void*, const osgvis_view*, osgvis_visible*) { return OSGVIS_OK; }
+} // namespace
+
+TEST(VisApi, AttributesMeshesAndHierarchyReachAModule)
+{
+    static const osgvis_module_callbacks reader{
+        OSGVIS_VISAPI_VERSION, "attribute-reader", 0, noState, noDestroy, readScene, nullptr, keepAll, nullptr, nullptr};
+    ASSERT_EQ(osgvis_register_module("attribute-reader", &reader, nullptr), OSGVIS_OK) << osgvis_last_error();
+    Context context = newContext();
+    addUnitBox(context.get(), -3.0);
+    addUnitBox(context.get(), -6.0);
+    ASSERT_EQ(osgvis_scene_set_attribute(context.get(), OSGVIS_INVALID_OBJECT, "units", "metre", 5), OSGVIS_OK);
+    const std::uint32_t weight = 42, other = 7;
+    ASSERT_EQ(osgvis_scene_set_attribute(context.get(), 1, "weight", &other, sizeof other), OSGVIS_OK);
+    ASSERT_EQ(osgvis_scene_set_attribute(context.get(), 1, "weight", &weight, sizeof weight), OSGVIS_OK);
+    ASSERT_EQ(osgvis_scene_set_attribute(context.get(), 0, "weight", &weight, sizeof weight), OSGVIS_OK);
+    ASSERT_EQ(osgvis_scene_set_attribute(context.get(), 0, "weight", nullptr, 0), OSGVIS_OK); // removes it
+    // A closed unit cube for object 0; the same cube without its x = 1 side for object 1.
+    float corners[24];
+    for (int i = 0; i < 8; ++i)
+        corners[3 * i] = float(i & 1), corners[3 * i + 1] = float((i >> 1) & 1), corners[3 * i + 2] = float((i >> 2) & 1);
+    const uint32_t faces[36] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                                2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+    ASSERT_EQ(osgvis_scene_set_mesh(context.get(), 0, corners, 8, faces, 12), OSGVIS_OK) << osgvis_last_error();
+    ASSERT_EQ(osgvis_scene_set_mesh(context.get(), 1, corners, 8, faces, 10), OSGVIS_OK) << osgvis_last_error();
+    ASSERT_EQ(osgvis_context_set_mode(context.get(), "attribute-reader"), OSGVIS_OK) << osgvis_last_error();
+    EXPECT_EQ(seen.sceneUnits, "metre");
+    EXPECT_EQ(seen.weightFound, 1);
+    EXPECT_EQ(seen.weight, 42u) << "the second call replaced the bytes";
+    EXPECT_EQ(seen.closedStatus, OSGVIS_OK);
+    EXPECT_EQ(seen.closedEdges, 6u) << "a cube seen from beyond a corner has a hexagonal silhouette";
+    EXPECT_EQ(seen.openStatus, OSGVIS_ERROR_UNSUPPORTED);
+    EXPECT_EQ(seen.openReason, "osgvis_scene_silhouette: the mesh of object 1 is not closed: edge 1-3 is used by 1 face");
+    EXPECT_EQ(seen.hasHierarchy, 0);
+
+    // Object 0's attribute is gone; with a hierarchy the module can walk it.
+    RendererTree tree;
+    tree.tree.build({{{-0.5, -0.5, -3.5}, {0.5, 0.5, -2.5}}, {{-0.5, -0.5, -6.5}, {0.5, 0.5, -5.5}}}, {true, true}, 1);
+    const osgvis_hierarchy_desc desc = tree.desc();
+    ASSERT_EQ(osgvis_scene_set_hierarchy(context.get(), &desc), OSGVIS_OK);
+    ASSERT_EQ(osgvis_context_set_mode(context.get(), "attribute-reader"), OSGVIS_OK) << osgvis_last_error();
+    EXPECT_EQ(seen.hasHierarchy, 1);
+    EXPECT_EQ(seen.nodesEntered, int(tree.tree.nodeCount()));
+}
+
+TEST(VisApi, HierarchyAttributeAndMeshMisuse)
+{
+    Scene boxes;
+    osgVis::test::addBox(boxes, {-0.5, -0.5, -3.5}, {0.5, 0.5, -2.5}, "near");
+    osgVis::test::addBox(boxes, {-0.5, -0.5, -6.5}, {0.5, 0.5, -5.5}, "far"); // wholly behind the near one
+    Context context = newContext();
+    describe(context.get(), boxes);
+    osgvis_hierarchy_desc desc{OSGVIS_HIERARCHY_DISJOINT, 1, nullptr, nullptr, nullptr};
+    EXPECT_EQ(osgvis_scene_set_hierarchy(context.get(), &desc), OSGVIS_ERROR_INVALID_ARGUMENT);
+    EXPECT_STREQ(osgvis_last_error(), "osgvis_scene_set_hierarchy: the hierarchy has no traverse callback");
+    desc.traverse = [](void*, const double*, const osgvis_hierarchy_visitor*) {};
+    desc.layout = static_cast<osgvis_hierarchy_layout>(5);
+    EXPECT_EQ(osgvis_scene_set_hierarchy(context.get(), &desc), OSGVIS_ERROR_INVALID_ARGUMENT);
+    EXPECT_STREQ(osgvis_last_error(),
+                 "osgvis_scene_set_hierarchy: the layout is neither OSGVIS_HIERARCHY_DISJOINT nor OSGVIS_HIERARCHY_OVERLAPPING");
+    EXPECT_EQ(osgvis_scene_set_attribute(context.get(), 9, "x", "y", 1), OSGVIS_ERROR_INVALID_ARGUMENT);
+    EXPECT_STREQ(osgvis_last_error(), "osgvis_scene_set_attribute: no object 9");
+    EXPECT_EQ(osgvis_scene_set_attribute(context.get(), 0, "", "y", 1), OSGVIS_ERROR_INVALID_ARGUMENT);
+    const float nan[3] = {0.f, std::nanf(""), 0.f};
+    const uint32_t face[3] = {0, 0, 0};
+    EXPECT_EQ(osgvis_scene_set_mesh(context.get(), 0, nan, 1, face, 1), OSGVIS_ERROR_INVALID_ARGUMENT);
+    EXPECT_STREQ(osgvis_last_error(), "osgvis_scene_set_mesh: a position is not finite");
+
+    // A hierarchy that holds no object is unusable: cdt walks its own tree (and culls object 1).
+    desc.layout = OSGVIS_HIERARCHY_OVERLAPPING;
+    EXPECT_EQ(osgvis_scene_set_hierarchy(context.get(), &desc), OSGVIS_OK);
+    ASSERT_EQ(osgvis_context_set_mode(context.get(), "cdt"), OSGVIS_OK) << osgvis_last_error();
+    const osgvis_view_desc view = lookDownMinusZ();
+    ASSERT_EQ(osgvis_cull(context.get(), &view), OSGVIS_OK);
+    EXPECT_EQ(visibleIds(context.get()), std::vector<ObjectId>{0});
 }

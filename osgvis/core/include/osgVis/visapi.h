@@ -28,7 +28,7 @@ extern "C" {
 /** The API version a program or module is compiled against: major changes break the ABI; a minor
  * one only adds. A host loads a module of the same major and a minor no newer than its own. */
 #define OSGVIS_VISAPI_VERSION_MAJOR 1
-#define OSGVIS_VISAPI_VERSION_MINOR 0
+#define OSGVIS_VISAPI_VERSION_MINOR 1
 #define OSGVIS_VISAPI_VERSION ((OSGVIS_VISAPI_VERSION_MAJOR << 16) | OSGVIS_VISAPI_VERSION_MINOR)
 
 /** Id of no object (an occluder without owner). */
@@ -103,6 +103,48 @@ typedef enum osgvis_change_kind
     OSGVIS_CHANGE_REMOVED = 2   /**< no longer drawn; ids stay valid and are never reported */
 } osgvis_change_kind;
 
+/** A renderer's hierarchy (version 1.1): how its nodes relate. */
+typedef enum osgvis_hierarchy_layout
+{
+    /** kd-tree, BSP, octree cells: siblings do not overlap, a child lies in its parent, an object
+     * lies in the node holding it; children are visited so that no later sibling lies in front of
+     * an earlier one as seen from the eye. */
+    OSGVIS_HIERARCHY_DISJOINT = 0,
+    /** A BVH or a scene graph's bounding boxes: nodes may overlap. */
+    OSGVIS_HIERARCHY_OVERLAPPING = 1
+} osgvis_hierarchy_layout;
+
+/** One node as a traversal hands it over (valid during the call it is passed to). */
+typedef struct osgvis_hierarchy_node
+{
+    uint32_t id;                             /**< stable, below the hierarchy's node_count */
+    double region_min[3], region_max[3];     /**< its region (disjoint) or bounding box (overlapping) */
+    const uint32_t* objects;                 /**< the objects held at this node, not its children's */
+    uint32_t object_count;
+} osgvis_hierarchy_node;
+
+/** What a traversal calls: enter returns nonzero to descend into the node's children; leave comes
+ * after the children of a node whose enter returned nonzero. */
+typedef struct osgvis_hierarchy_visitor
+{
+    void* state;
+    int (*enter)(void* state, const osgvis_hierarchy_node* node);
+    void (*leave)(void* state, const osgvis_hierarchy_node* node);
+} osgvis_hierarchy_visitor;
+
+/** A renderer's own hierarchy, walked front to back by callback. */
+typedef struct osgvis_hierarchy_desc
+{
+    osgvis_hierarchy_layout layout;
+    uint32_t node_count;
+    void* user_data;
+    /** Depth first from the root, the children nearest to `eye` first; the same nodes with the same
+     * regions and objects every time (a module checks, and keeps everything when they differ). */
+    void (*traverse)(void* user_data, const double eye[3], const osgvis_hierarchy_visitor* visitor);
+    /** Optional: called once when osgVis no longer needs the hierarchy. */
+    void (*destroy)(void* user_data);
+} osgvis_hierarchy_desc;
+
 /* ---- renderer side ---- */
 
 /** A scene, a chosen mode (module chain) and the last answer. Owned by the caller. */
@@ -127,6 +169,23 @@ OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_add_cell(osgvis_context* context
 /** A portal between two cells (build phase). */
 OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_add_portal(osgvis_context* context, const double* points,
                                                            uint32_t point_count, uint32_t cell_a, uint32_t cell_b);
+/** Version 1.1. Hands the renderer's hierarchy to the modules (build phase, like occluders:
+ * it reaches them at the next osgvis_context_set_mode); NULL removes it. Modules that walk a
+ * hierarchy (cdt) walk it instead of their own, after checking it (docs/visapi.md); traverse is
+ * then called from osgvis_cull, on the calling thread. */
+OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_set_hierarchy(osgvis_context* context,
+                                                              const osgvis_hierarchy_desc* hierarchy);
+/** Version 1.1. Attaches `size` bytes (copied) under `name` to object `object`, or to the scene
+ * when object is OSGVIS_INVALID_OBJECT: data osgVis does not know, for modules that do. A second
+ * call with the same name replaces the bytes; size 0 removes them. */
+OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_set_attribute(osgvis_context* context, uint32_t object,
+                                                              const char* name, const void* data, size_t size);
+/** Version 1.1. The object's connectivity: vertex_count positions (xyz floats, world space) and
+ * triangle_count triangles of 3 indices, counter-clockwise seen from the front (copied). Nothing
+ * trusts it: osgvis_scene_silhouette answers only for a mesh that is closed. */
+OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_set_mesh(osgvis_context* context, uint32_t object,
+                                                         const float* positions, uint32_t vertex_count,
+                                                         const uint32_t* indices, uint32_t triangle_count);
 /** New bounds (and triangles, when `triangles` is not NULL) for an object; notifies the modules. */
 OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_move_object(osgvis_context* context, uint32_t id,
                                                             const double bounds_min[3], const double bounds_max[3],
@@ -192,6 +251,31 @@ OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_occluder(const osgvis_scene* sce
 OSGVIS_VISAPI_EXPORT uint32_t osgvis_scene_cell_count(const osgvis_scene* scene);
 OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_cell(const osgvis_scene* scene, uint32_t index, double bounds_min[3],
                                                      double bounds_max[3]);
+
+OSGVIS_VISAPI_EXPORT uint32_t osgvis_scene_portal_count(const osgvis_scene* scene);
+/** Portal `index` (version 1.1): its cells and its points, as osgvis_scene_occluder gives them. */
+OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_portal(const osgvis_scene* scene, uint32_t index, uint32_t* cell_a,
+                                                       uint32_t* cell_b, double* points, uint32_t capacity,
+                                                       uint32_t* point_count);
+/** Version 1.1: 1 when the renderer handed over a hierarchy (its layout and node count then go to
+ * the outputs that are not NULL), else 0. */
+OSGVIS_VISAPI_EXPORT int osgvis_scene_hierarchy(const osgvis_scene* scene, osgvis_hierarchy_layout* layout,
+                                                uint32_t* node_count);
+/** Version 1.1: walks the renderer's hierarchy front to back from `eye` with `visitor`. */
+OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_traverse(const osgvis_scene* scene, const double eye[3],
+                                                         const osgvis_hierarchy_visitor* visitor);
+/** Version 1.1: 1 and the bytes (valid as long as the scene handle) when `name` is attached to
+ * `object` (OSGVIS_INVALID_OBJECT: the scene), else 0 with *data NULL and *size 0. */
+OSGVIS_VISAPI_EXPORT int osgvis_scene_attribute(const osgvis_scene* scene, uint32_t object, const char* name,
+                                                const void** data, size_t* size);
+/** Version 1.1: the edges of the object's mesh where a face turned to `eye` meets one turned away,
+ * as vertex index pairs into `edges` (2 * capacity); *edge_count receives how many there are.
+ * OSGVIS_ERROR_UNSUPPORTED (the reason in osgvis_last_error) when the object has no mesh or its mesh
+ * is not closed: an edge used by other than exactly two faces, two faces using an edge in the same
+ * direction, an index out of range, a degenerate face. */
+OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_silhouette(const osgvis_scene* scene, uint32_t object,
+                                                           const double eye[3], uint32_t* edges, uint32_t capacity,
+                                                           uint32_t* edge_count);
 
 typedef struct osgvis_view_info
 {

@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The module side's read-only accessors of osgVis/visapi.h over the core's Scene, View, ViewRegion
-// and VisibleSet. Nothing here allocates or throws, so they need no exception boundary.
+// and VisibleSet. Only the traversal (the renderer's code runs inside it) and the silhouette (it
+// allocates) can fail by exception; they catch what they may meet, the rest cannot throw.
 #include <osgVis/core/capi/LastError.h>
+#include <osgVis/core/capi/HierarchyNodes.h>
 #include <osgVis/core/capi/ModuleSideHandles.h>
+
+#include <new>
 
 using namespace osgVis::core;
 using osgVis::core::capi::failuref;
@@ -142,4 +146,132 @@ osgvis_status osgvis_visible_clear(osgvis_visible* visible, uint32_t id)
         return failuref(OSGVIS_ERROR_INVALID_ARGUMENT, "osgvis_visible_clear: no object %u", id);
     visible->set->clear(id);
     return OSGVIS_OK;
+}
+
+uint32_t osgvis_scene_portal_count(const osgvis_scene* scene)
+{
+    return scene && scene->scene ? static_cast<uint32_t>(scene->scene->portals.size()) : 0;
+}
+
+osgvis_status osgvis_scene_portal(const osgvis_scene* scene, uint32_t index, uint32_t* cell_a, uint32_t* cell_b,
+                                  double* points, uint32_t capacity, uint32_t* point_count)
+{
+    if (!scene || !scene->scene || !point_count || (capacity > 0 && !points))
+        return nullHandle("osgvis_scene_portal");
+    if (index >= scene->scene->portals.size())
+        return failuref(OSGVIS_ERROR_INVALID_ARGUMENT, "osgvis_scene_portal: no portal %u", index);
+    const Portal& portal = scene->scene->portals[index];
+    if (cell_a)
+        *cell_a = portal.cellA;
+    if (cell_b)
+        *cell_b = portal.cellB;
+    const std::vector<Vec3>& vertices = portal.polygon.vertices();
+    *point_count = static_cast<uint32_t>(vertices.size());
+    for (std::size_t i = 0; i < vertices.size() && i < capacity; ++i)
+        copyVec3(vertices[i], points + 3 * i);
+    return OSGVIS_OK;
+}
+
+int osgvis_scene_hierarchy(const osgvis_scene* scene, osgvis_hierarchy_layout* layout, uint32_t* node_count)
+{
+    if (!scene || !scene->scene || !scene->scene->hierarchy)
+        return 0;
+    const TraversalHierarchy& hierarchy = *scene->scene->hierarchy;
+    if (layout)
+        *layout = hierarchy.layout() == HierarchyLayout::Disjoint ? OSGVIS_HIERARCHY_DISJOINT : OSGVIS_HIERARCHY_OVERLAPPING;
+    if (node_count)
+        *node_count = hierarchy.nodeCount();
+    return 1;
+}
+
+namespace
+{
+// A module's C visitor as the core's.
+struct CVisitor : HierarchyVisitor
+{
+    const osgvis_hierarchy_visitor& visitor;
+    explicit CVisitor(const osgvis_hierarchy_visitor& v) : visitor(v) {}
+    bool enter(const HierarchyNode& node) override
+    {
+        const osgvis_hierarchy_node c = osgVis::core::capi::cNode(node);
+        return visitor.enter(visitor.state, &c) != 0;
+    }
+    void leave(const HierarchyNode& node) override
+    {
+        const osgvis_hierarchy_node c = osgVis::core::capi::cNode(node);
+        if (visitor.leave)
+            visitor.leave(visitor.state, &c);
+    }
+};
+} // namespace
+
+osgvis_status osgvis_scene_traverse(const osgvis_scene* scene, const double eye[3], const osgvis_hierarchy_visitor* visitor)
+{
+    if (!scene || !scene->scene || !eye || !visitor || !visitor->enter)
+        return nullHandle("osgvis_scene_traverse");
+    if (!scene->scene->hierarchy)
+        return failuref(OSGVIS_ERROR_BAD_STATE, "osgvis_scene_traverse: the renderer handed over no hierarchy");
+    // note: the renderer's traversal runs here; what it throws (through osgVis's own callbacks)
+    // must not reach the module's C code.
+    try
+    {
+        CVisitor adapter(*visitor);
+        scene->scene->hierarchy->traverse({eye[0], eye[1], eye[2]}, adapter);
+        return OSGVIS_OK;
+    }
+    catch (const std::exception& e)
+    {
+        return failuref(OSGVIS_ERROR_INTERNAL, "osgvis_scene_traverse: %s", e.what());
+    }
+    catch (...)
+    {
+        return failuref(OSGVIS_ERROR_INTERNAL, "osgvis_scene_traverse: a non-standard exception");
+    }
+}
+
+int osgvis_scene_attribute(const osgvis_scene* scene, uint32_t object, const char* name, const void** data, size_t* size)
+{
+    if (data)
+        *data = nullptr;
+    if (size)
+        *size = 0;
+    if (!scene || !scene->scene || !name)
+        return 0;
+    const std::vector<std::uint8_t>* bytes = scene->scene->attributes.find(object, name);
+    if (!bytes)
+        return 0;
+    if (data)
+        *data = bytes->data();
+    if (size)
+        *size = bytes->size();
+    return 1;
+}
+
+osgvis_status osgvis_scene_silhouette(const osgvis_scene* scene, uint32_t object, const double eye[3], uint32_t* edges,
+                                      uint32_t capacity, uint32_t* edge_count)
+{
+    if (!scene || !scene->scene || !eye || !edge_count || (capacity > 0 && !edges))
+        return nullHandle("osgvis_scene_silhouette");
+    const auto it = scene->scene->meshes.find(object);
+    if (it == scene->scene->meshes.end())
+        return failuref(OSGVIS_ERROR_UNSUPPORTED, "osgvis_scene_silhouette: object %u has no mesh", object);
+    if (!it->second.closed())
+        return failuref(OSGVIS_ERROR_UNSUPPORTED, "osgvis_scene_silhouette: the mesh of object %u is not closed: %s",
+                        object, it->second.problem().c_str());
+    try
+    {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> found;
+        it->second.silhouette({eye[0], eye[1], eye[2]}, found);
+        *edge_count = static_cast<uint32_t>(found.size());
+        for (std::size_t i = 0; i < found.size() && i < capacity; ++i)
+        {
+            edges[2 * i] = found[i].first;
+            edges[2 * i + 1] = found[i].second;
+        }
+        return OSGVIS_OK;
+    }
+    catch (const std::bad_alloc&)
+    {
+        return failuref(OSGVIS_ERROR_OUT_OF_MEMORY, "osgvis_scene_silhouette: out of memory");
+    }
 }

@@ -6,7 +6,9 @@
 #include <osgVis/core/cdt/CoverageTriangulation.h>
 #include <osgVis/core/occluders/OccluderBuilder.h>
 
-#include "CellKdTree.h"
+#include <osgVis/core/spatial/DisjointCellTree.h>
+#include <osgVis/core/spatial/HierarchyIndex.h>
+
 #include "ScreenGrid.h"
 
 #include <algorithm>
@@ -39,11 +41,26 @@ enum class Drawn : std::uint8_t
     Visible,
     Hidden,
 };
+
+/// The traversal's two steps (lambdas sharing the cull's state) as a HierarchyVisitor.
+template <class Enter, class Leave>
+struct CallVisitor : HierarchyVisitor
+{
+    Enter& onEnter;
+    Leave& onLeave;
+    CallVisitor(Enter& e, Leave& l) : onEnter(e), onLeave(l) {}
+    bool enter(const HierarchyNode& node) override { return onEnter(node); }
+    void leave(const HierarchyNode& node) override { onLeave(node); }
+};
 } // namespace
 
 struct CdtModule::Impl
 {
-    CellKdTree tree;
+    DisjointCellTree ownTree;
+    const TraversalHierarchy* hierarchy = nullptr; ///< ownTree or the scene's
+    std::shared_ptr<const TraversalHierarchy> sceneHierarchy; ///< kept alive while walked
+    HierarchyIndex index;
+    std::string hierarchyProblem;
     std::vector<OccluderPolygon> polygons;
     std::vector<Aabb> polygonBounds;
     /// Per polygon, per edge: the polygons with exactly that edge (same end points, opposite
@@ -97,7 +114,27 @@ void CdtModule::setScene(const Scene& scene)
         bounds[object.id] = object.bounds;
         present[object.id] = !(object.flags & OBJECT_ALWAYS_VISIBLE);
     }
-    m.tree.build(bounds, present, _options.maxLeafObjects);
+    // The renderer's hierarchy when it passes the checks, else a kd-tree of our own.
+    m.hierarchy = nullptr;
+    m.sceneHierarchy.reset();
+    m.hierarchyProblem.clear();
+    if (_options.sceneHierarchy && scene.hierarchy)
+    {
+        m.index.build(*scene.hierarchy, scene);
+        if (m.index.usable())
+        {
+            m.sceneHierarchy = scene.hierarchy;
+            m.hierarchy = scene.hierarchy.get();
+        }
+        m.hierarchyProblem = m.index.problem();
+    }
+    m.ownTree = {};
+    if (!m.hierarchy)
+    {
+        m.ownTree.build(bounds, present, _options.maxLeafObjects);
+        m.index.build(m.ownTree, scene);
+        m.hierarchy = &m.ownTree;
+    }
 
     m.polygons = buildOccluderPolygons(scene);
     m.polygonBounds.assign(m.polygons.size(), Aabb{});
@@ -157,7 +194,7 @@ void CdtModule::cull(const View& view, VisibleSet& visible)
     Impl& m = *_impl;
     const auto start = std::chrono::steady_clock::now();
     m.stats = {};
-    if (!_scene || m.tree.empty() || !m.grid.set(view, _options.tolerancePixels))
+    if (!_scene || !m.hierarchy || m.index.objects().empty() || !m.grid.set(view, _options.tolerancePixels))
         return;
     const Scene& scene = *_scene;
     m.view = view;
@@ -286,48 +323,67 @@ void CdtModule::cull(const View& view, VisibleSet& visible)
             drawPolygon(index, inside ? cdt::CoverKind::DepthFree : cdt::CoverKind::DepthOnly);
         }
     };
-    auto cullSubtree = [&](auto&& self, std::uint32_t node) -> void {
-        const CellKdTree::Node& n = m.tree.node(node);
-        for (std::uint32_t i = 0; i < n.objectCount; ++i)
-            visible.clear(m.tree.objects()[n.firstObject + i]);
-        if (!n.leaf())
-        {
-            self(self, n.left);
-            self(self, n.right);
-        }
+    auto cullSubtree = [&](const HierarchyIndex::Node& n) {
+        for (std::uint32_t i = n.firstObject; i < n.subtreeEnd; ++i)
+            visible.clear(m.index.objects()[i]);
     };
-    const bool depthOnly = _options.rule == CdtOptions::Rule::DepthOnly;
+    // Over overlapping nodes front to back orders nothing along rays: depth is all that separates.
+    const bool depthOnly = _options.rule == CdtOptions::Rule::DepthOnly || m.index.layout() == HierarchyLayout::Overlapping;
     for (std::uint32_t index : m.statedPolygons)
         drawPolygon(index, cdt::CoverKind::DepthOnly);
 
-    auto visit = [&](auto&& self, std::uint32_t node, std::size_t depth) -> bool {
-        const CellKdTree::Node& n = m.tree.node(node);
-        if (n.contents.empty())
-            return true;
-        if (!allowTest())
+    HierarchyIndex::Walk walk(m.index, view.eye);
+    bool stopped = false; // the test budget ran out, or the traversal strayed: nothing more is culled
+    const VisibleSet candidates = visible;
+    // Per depth of the walk: the node entered there and its objects by distance (an inner node's
+    // list must outlive its children's).
+    std::vector<const HierarchyIndex::Node*> entered;
+    auto enter = [&](const HierarchyNode& node) -> bool {
+        if (stopped)
             return false;
+        const HierarchyIndex::Node* found = walk.enter(node);
+        if (!found)
+        {
+            m.stats.traversalStrayed = stopped = true;
+            return false;
+        }
+        const HierarchyIndex::Node& n = *found;
+        const std::size_t depth = walk.depth() - 1;
+        auto skip = [&]() {
+            walk.leave();
+            return false;
+        };
+        if (n.contents.empty())
+            return skip();
+        if (!allowTest())
+        {
+            stopped = true;
+            return skip();
+        }
         ++m.stats.nodesVisited;
         if (view.frustum.classify(n.contents) == Containment::Outside)
         {
             debugNode(n.contents, NodeState::OutsideFrustum, depth);
-            cullSubtree(cullSubtree, node);
-            return true;
+            cullSubtree(n);
+            return skip();
         }
         if (boxHidden(n.contents))
         {
             ++m.stats.nodesHidden;
             debugNode(n.contents, NodeState::Invisible, depth);
-            cullSubtree(cullSubtree, node);
-            return true;
+            cullSubtree(n);
+            return skip();
         }
         // The objects held here, nearest first. Each is tested against the record as it stood
         // when the node was entered plus, by depth only, what nearer objects here added: objects
         // of one node are not ordered along rays, so depth is all that may separate them.
-        std::vector<std::pair<double, ObjectId>>& order = m.orderScratch[std::min<std::size_t>(depth, m.orderScratch.size() - 1)];
+        if (depth >= m.orderScratch.size())
+            m.orderScratch.resize(depth + 1);
+        std::vector<std::pair<double, ObjectId>>& order = m.orderScratch[depth];
         order.clear();
-        for (std::uint32_t i = 0; i < n.objectCount; ++i)
+        for (std::uint32_t i = n.firstObject; i < n.firstObject + n.heldCount; ++i)
         {
-            const ObjectId id = m.tree.objects()[n.firstObject + i];
+            const ObjectId id = m.index.objects()[i];
             if (!visible.test(id))
                 continue;
             const Aabb& b = scene.objects[id].bounds;
@@ -338,7 +394,10 @@ void CdtModule::cull(const View& view, VisibleSet& visible)
         for (const auto& [distance, id] : order)
         {
             if (!allowTest())
-                return false;
+            {
+                stopped = true;
+                return skip();
+            }
             ++m.stats.objectsTested;
             const Aabb& b = scene.objects[id].bounds;
             if (view.frustum.classify(b) == Containment::Outside)
@@ -364,31 +423,31 @@ void CdtModule::cull(const View& view, VisibleSet& visible)
                     drawObject(id, nullptr);
             }
         }
-        // Once the node's cell is finished, its objects hide every later cell without depth.
-        auto drawHeldWithoutDepth = [&]() {
-            if (depthOnly)
-                return;
-            for (const auto& entry : order)
-                if (m.drawn[entry.second] == Drawn::Visible)
-                    drawObject(entry.second, &n.cell);
-        };
         if (n.leaf())
-        {
             debugNode(n.contents, NodeState::Visible, depth);
-            drawHeldWithoutDepth();
-            return true;
-        }
-        const bool lowFirst = view.eye[n.axis] < n.split;
-        if (!self(self, lowFirst ? n.left : n.right, depth + 1) || !self(self, lowFirst ? n.right : n.left, depth + 1))
-            return false;
-        // The subtree is done: everything still to come lies behind this cell.
-        drawHeldWithoutDepth();
+        entered.resize(depth + 1);
+        entered[depth] = &n;
         return true;
     };
-    visit(visit, m.tree.root(), 0);
+    // Once the node's region is finished, its objects hide every later region without depth.
+    auto leave = [&](const HierarchyNode&) {
+        const std::size_t depth = walk.depth() - 1;
+        if (!stopped && !depthOnly)
+            for (const auto& entry : m.orderScratch[depth])
+                if (m.drawn[entry.second] == Drawn::Visible)
+                    drawObject(entry.second, &entered[depth]->region);
+        walk.leave();
+    };
+    CallVisitor<decltype(enter), decltype(leave)> visitor(enter, leave);
+    m.hierarchy->traverse(view.eye, visitor);
+    if (m.stats.traversalStrayed)
+        visible = candidates;
     m.stats.triangles = m.record.statistics().triangles;
     m.stats.cullMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 CdtModule::Statistics CdtModule::lastStatistics() const { return _impl->stats; }
+bool CdtModule::walksSceneHierarchy() const { return _impl->hierarchy && _impl->hierarchy != &_impl->ownTree; }
+HierarchyLayout CdtModule::walkedLayout() const { return _impl->index.layout(); }
+const std::string& CdtModule::hierarchyProblem() const { return _impl->hierarchyProblem; }
 } // namespace osgVis::core

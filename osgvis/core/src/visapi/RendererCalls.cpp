@@ -3,6 +3,7 @@
 // names, and the last answer. Each call checks its arguments and runs behind the exception boundary.
 #include <osgVis/visapi.h>
 
+#include "CallbackHierarchy.h"
 #include "ErrorBoundary.h"
 
 #include <chrono>
@@ -11,6 +12,7 @@
 
 using namespace osgVis::core;
 using osgVis::core::capi::ApiFailure;
+using osgVis::core::capi::CallbackHierarchy;
 using osgVis::core::capi::guarded;
 
 struct osgvis_context
@@ -346,5 +348,64 @@ osgvis_status osgvis_stage_statistics(const osgvis_context* context, uint32_t in
                            *milliseconds = timings[index].milliseconds;
                        if (visible_after)
                            *visible_after = static_cast<uint32_t>(timings[index].visibleAfter);
+                   });
+}
+
+osgvis_status osgvis_scene_set_hierarchy(osgvis_context* context, const osgvis_hierarchy_desc* hierarchy)
+{
+    return guarded("osgvis_scene_set_hierarchy",
+                   [&]
+                   {
+                       require(context != nullptr, "null context");
+                       if (!hierarchy)
+                       {
+                           context->scene.hierarchy.reset();
+                           return;
+                       }
+                       require(hierarchy->traverse != nullptr, "the hierarchy has no traverse callback");
+                       require(hierarchy->layout == OSGVIS_HIERARCHY_DISJOINT ||
+                                   hierarchy->layout == OSGVIS_HIERARCHY_OVERLAPPING,
+                               "the layout is neither OSGVIS_HIERARCHY_DISJOINT nor OSGVIS_HIERARCHY_OVERLAPPING");
+                       require(hierarchy->node_count > 0, "the hierarchy has no nodes");
+                       context->scene.hierarchy = std::make_shared<CallbackHierarchy>(*hierarchy);
+                   });
+}
+
+osgvis_status osgvis_scene_set_attribute(osgvis_context* context, uint32_t object, const char* name, const void* data,
+                                         size_t size)
+{
+    return guarded("osgvis_scene_set_attribute",
+                   [&]
+                   {
+                       require(context && name && *name, "null context or empty name");
+                       require(size == 0 || data, "null data");
+                       if (object != OSGVIS_INVALID_OBJECT)
+                           requireObject(*context, object);
+                       const auto* bytes = static_cast<const std::uint8_t*>(data);
+                       context->scene.attributes.set(object, name, std::vector<std::uint8_t>(bytes, bytes + size));
+                   });
+}
+
+osgvis_status osgvis_scene_set_mesh(osgvis_context* context, uint32_t object, const float* positions,
+                                    uint32_t vertex_count, const uint32_t* indices, uint32_t triangle_count)
+{
+    return guarded("osgvis_scene_set_mesh",
+                   [&]
+                   {
+                       require(context != nullptr, "null context");
+                       requireObject(*context, object);
+                       require((positions || vertex_count == 0) && (indices || triangle_count == 0),
+                               "null positions or indices");
+                       std::vector<Vec3f> points;
+                       points.reserve(vertex_count);
+                       for (std::uint32_t i = 0; i < vertex_count; ++i)
+                       {
+                           points.emplace_back(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+                           require(std::isfinite(points.back().x) && std::isfinite(points.back().y) &&
+                                       std::isfinite(points.back().z),
+                                   "a position is not finite");
+                       }
+                       context->scene.meshes[object] =
+                           WingedEdgeMesh(std::move(points), std::vector<std::uint32_t>(indices, indices + 3 * std::size_t(triangle_count)));
                    });
 }

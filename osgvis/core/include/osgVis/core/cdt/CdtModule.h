@@ -18,9 +18,11 @@
 /// - "cdt": both: straddling objects count by depth inside their node's subtree and without depth
 ///   after it, leaf objects without depth after their leaf.
 /// Region queries are not answered (supportsRegions() is false): the record holds for one eye.
+/// The traversal walks any TraversalHierarchy: its own DisjointCellTree, or the renderer's.
 #include <osgVis/core/module/VisibilityModule.h>
 
 #include <memory>
+#include <string>
 
 namespace osgVis::core
 {
@@ -44,6 +46,11 @@ struct CdtOptions
     /// Objects a leaf holds at most: one lets every object hide the cells after it at once
     /// (objects in one leaf are not ordered along rays, so they hide each other only by depth).
     std::uint32_t maxLeafObjects = 1;
+    /// Walk the renderer's hierarchy (Scene::hierarchy) when it has one and it passes the checks
+    /// of HierarchyIndex, instead of building a kd-tree. One declared Overlapping (or found not to
+    /// be disjoint) is walked under the depth-only rule whatever `rule` says: front to back over
+    /// overlapping boxes does not order what they hold along rays.
+    bool sceneHierarchy = true;
 };
 
 class CdtModule : public VisibilityModule
@@ -68,10 +75,20 @@ public:
         std::uint32_t sharedEdgesKept = 0; ///< occluder edges not eroded: exactly shared with a drawn neighbour
         std::uint32_t redrawn = 0;         ///< occluders drawn again once the twin across an edge was drawn
         bool testBudgetReached = false;
+        /// The traversal strayed from the hierarchy recorded at setScene (another structure, a
+        /// sibling out of front-to-back order): this frame kept every candidate.
+        bool traversalStrayed = false;
         std::uint32_t triangles = 0; ///< in the triangulation at the end of the frame
         double cullMs = 0.0;
     };
     Statistics lastStatistics() const;
+
+    /// Which hierarchy setScene chose: the renderer's (Scene::hierarchy) or the module's own tree.
+    bool walksSceneHierarchy() const;
+    /// The layout walked (Overlapping: the depth-only rule holds whatever the options say).
+    HierarchyLayout walkedLayout() const;
+    /// Why the renderer's hierarchy was not used or was walked as Overlapping ("" when neither).
+    const std::string& hierarchyProblem() const;
 
 private:
     struct Impl;

@@ -5,15 +5,19 @@
 /// made of, occluder candidates, and cells/portals where a modeller stated them.
 #include <osgVis/core/geometry/Aabb.h>
 #include <osgVis/core/geometry/ConvexPolygon.h>
+#include <osgVis/core/geometry/WingedEdgeMesh.h>
+#include <osgVis/core/scene/NamedAttributes.h>
+#include <osgVis/core/scene/TraversalHierarchy.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
 namespace osgVis::core
 {
-using ObjectId = std::uint32_t;
 constexpr ObjectId InvalidObject = ~ObjectId(0);
 
 /// World space, counter-clockwise seen from the side the renderer treats as front.
@@ -81,6 +85,11 @@ struct Scene
     std::vector<OccluderCandidate> occluders;
     std::vector<Cell> cells;
     std::vector<Portal> portals;
+    /// The renderer's own hierarchy over the objects, when it hands one to the modules (may be null).
+    std::shared_ptr<const TraversalHierarchy> hierarchy;
+    /// Connectivity a renderer supplied, per object (checked, not trusted: WingedEdgeMesh::closed).
+    std::unordered_map<ObjectId, WingedEdgeMesh> meshes;
+    NamedAttributes attributes;
 
     Aabb bounds() const;
     std::uint64_t totalTriangles() const;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Luka, "Visibility culling with a constrained Delaunay triangulation", §2.2.4: the kd-tree of
 // cells the CDT traversal visits front to back.
-#include "CellKdTree.h"
+#include <osgVis/core/spatial/DisjointCellTree.h>
 
 #include <algorithm>
 
@@ -13,7 +13,7 @@ constexpr int MaxDepth = 40;
 
 } // namespace
 
-void CellKdTree::build(const std::vector<Aabb>& bounds, const std::vector<bool>& present, std::uint32_t maxLeafObjects)
+void DisjointCellTree::build(const std::vector<Aabb>& bounds, const std::vector<bool>& present, std::uint32_t maxLeafObjects)
 {
     _bounds = &bounds;
     _maxLeafObjects = std::max<std::uint32_t>(1, maxLeafObjects);
@@ -38,7 +38,7 @@ void CellKdTree::build(const std::vector<Aabb>& bounds, const std::vector<bool>&
     _bounds = nullptr;
 }
 
-std::uint32_t CellKdTree::buildNode(const Aabb& cell, std::vector<ObjectId>& ids, int depth)
+std::uint32_t DisjointCellTree::buildNode(const Aabb& cell, std::vector<ObjectId>& ids, int depth)
 {
     const std::uint32_t index = std::uint32_t(_nodes.size());
     _nodes.push_back({});
@@ -133,5 +133,30 @@ std::uint32_t CellKdTree::buildNode(const Aabb& cell, std::vector<ObjectId>& ids
     _nodes[index].left = left;
     _nodes[index].right = right;
     return index;
+}
+
+void DisjointCellTree::traverse(const Vec3& eye, HierarchyVisitor& visitor) const
+{
+    if (!_nodes.empty())
+        visit(root(), eye, visitor);
+}
+
+void DisjointCellTree::visit(std::uint32_t index, const Vec3& eye, HierarchyVisitor& visitor) const
+{
+    const Node& n = _nodes[index];
+    HierarchyNode node;
+    node.id = index;
+    node.region = n.cell;
+    node.objects = _objects.data() + n.firstObject;
+    node.objectCount = n.objectCount;
+    if (!visitor.enter(node))
+        return;
+    if (!n.leaf())
+    {
+        const bool lowFirst = eye[n.axis] < n.split;
+        visit(lowFirst ? n.left : n.right, eye, visitor);
+        visit(lowFirst ? n.right : n.left, eye, visitor);
+    }
+    visitor.leave(node);
 }
 } // namespace osgVis::core
