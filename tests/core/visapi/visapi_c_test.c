@@ -2,7 +2,8 @@
 /*
  * The C interface from C99 (compiled with -std=c99 -pedantic -Werror): a line of boxes culled
  * through osgVis/visapi.h by the built-in `frustum`, by the plugin `cfrustum` and by a module this
- * program registers itself, each answer checked id by id.
+ * program registers itself, each answer checked id by id; and (version 1.1) the program's own
+ * hierarchy handed over by callback and walked by a module of the program.
  *
  *      eye at the origin, looking down -z (60 degree field of view, far 100)
  *      ids 0..9: unit boxes at z = -5, -6, ... -14   (in view)
@@ -50,6 +51,91 @@ static osgvis_status odd_cull(void* state, const osgvis_view* view, osgvis_visib
     for (id = 1; id < osgvis_visible_capacity(visible); id += 2)
         osgvis_visible_clear(visible, id);
     return OSGVIS_OK;
+}
+
+/* The program's hierarchy: a root box holding nothing and one leaf per box (disjoint), the leaves
+ * nearest the eye first. */
+static uint32_t leaf_objects[20];
+static int traversals = 0;
+static void box_hierarchy_traverse(void* user_data, const double eye[3], const osgvis_hierarchy_visitor* visitor)
+{
+    osgvis_hierarchy_node root, leaf;
+    int order[20], i, j;
+    (void)user_data;
+    ++traversals;
+    memset(&root, 0, sizeof root);
+    root.id = 0;
+    root.region_min[0] = root.region_min[1] = -0.5;
+    root.region_max[0] = root.region_max[1] = 0.5;
+    root.region_min[2] = -14.5;
+    root.region_max[2] = 14.5;
+    if (!visitor->enter(visitor->state, &root))
+        return;
+    for (i = 0; i < 20; ++i)
+        order[i] = i;
+    for (i = 1; i < 20; ++i) /* insertion sort by distance of the box centre to the eye's z */
+        for (j = i; j > 0; --j)
+        {
+            const double zj = order[j] < 10 ? -5.0 - order[j] : 5.0 + (order[j] - 10);
+            const double zk = order[j - 1] < 10 ? -5.0 - order[j - 1] : 5.0 + (order[j - 1] - 10);
+            if (fabs(zj - eye[2]) < fabs(zk - eye[2]))
+            {
+                const int t = order[j];
+                order[j] = order[j - 1];
+                order[j - 1] = t;
+            }
+        }
+    for (i = 0; i < 20; ++i)
+    {
+        const double z = order[i] < 10 ? -5.0 - order[i] : 5.0 + (order[i] - 10);
+        leaf = root;
+        leaf.id = (uint32_t)(1 + order[i]);
+        leaf.region_min[2] = z - 0.5;
+        leaf.region_max[2] = z + 0.5;
+        leaf_objects[order[i]] = (uint32_t)order[i];
+        leaf.objects = &leaf_objects[order[i]];
+        leaf.object_count = 1;
+        if (visitor->enter(visitor->state, &leaf))
+            visitor->leave(visitor->state, &leaf);
+    }
+    visitor->leave(visitor->state, &root);
+}
+
+/* A module of this program that walks the renderer's hierarchy: it culls the objects of every node
+ * lying wholly behind the eye (z > 0 here) and does not descend below such a node. */
+static osgvis_visible* walk_visible;
+static int walk_enter(void* state, const osgvis_hierarchy_node* node)
+{
+    uint32_t i;
+    (void)state;
+    if (node->region_min[2] <= 0.0)
+        return 1;
+    for (i = 0; i < node->object_count; ++i)
+        osgvis_visible_clear(walk_visible, node->objects[i]);
+    return 0;
+}
+static const osgvis_scene* walk_scene;
+static osgvis_status walk_set_scene(void* state, const osgvis_scene* scene)
+{
+    (void)state;
+    walk_scene = scene;
+    return OSGVIS_OK;
+}
+static osgvis_status walk_cull(void* state, const osgvis_view* view, osgvis_visible* visible)
+{
+    osgvis_view_info info;
+    osgvis_hierarchy_visitor visitor;
+    osgvis_hierarchy_layout layout;
+    uint32_t nodes = 0;
+    (void)state;
+    if (!osgvis_scene_hierarchy(walk_scene, &layout, &nodes) || layout != OSGVIS_HIERARCHY_DISJOINT || nodes != 21)
+        return OSGVIS_ERROR_BAD_STATE;
+    osgvis_view_get(view, &info);
+    walk_visible = visible;
+    visitor.state = NULL;
+    visitor.enter = walk_enter;
+    visitor.leave = NULL;
+    return osgvis_scene_traverse(walk_scene, info.eye, &visitor);
 }
 
 static void perspective(double fovy_degrees, double aspect, double near_distance, double far_distance,
@@ -136,6 +222,29 @@ int main(void)
     CHECK(osgvis_register_module("codd-incomplete", &odd, NULL) == OSGVIS_ERROR_MODULE_LOAD);
     CHECK(strcmp(osgvis_last_error(), "osgvis_register_module: module registered as 'codd-incomplete': the callback "
                                       "table has no cull") == 0);
+
+    {
+        osgvis_hierarchy_desc hierarchy;
+        osgvis_module_callbacks walk;
+        memset(&hierarchy, 0, sizeof hierarchy);
+        hierarchy.layout = OSGVIS_HIERARCHY_DISJOINT;
+        hierarchy.node_count = 21;
+        hierarchy.traverse = box_hierarchy_traverse;
+        CHECK(osgvis_scene_set_hierarchy(context, &hierarchy) == OSGVIS_OK);
+        memset(&walk, 0, sizeof walk);
+        walk.api_version = OSGVIS_VISAPI_VERSION;
+        walk.name = "cwalk";
+        walk.create = odd_create;
+        walk.destroy = odd_destroy;
+        walk.set_scene = walk_set_scene;
+        walk.cull = walk_cull;
+        CHECK(osgvis_register_module("cwalk", &walk, &odd_state) == OSGVIS_OK);
+        traversals = 0;
+        check_answer(context, "cwalk", in_view, 10);
+        CHECK(traversals == 1);
+        check_answer(context, "cdt", in_view, 10); /* cdt checks the hierarchy, then walks it */
+        CHECK(traversals >= 3);
+    }
 
     osgvis_context_destroy(context);
     if (failures == 0)
