@@ -24,7 +24,8 @@ std::string rawUsage()
            "  \"n0/n3/n12#p1\"), sorted; and DIR/objects.txt, every object's identity, flags,\n"
            "  triangles, world bounds and a hash of its world triangles. osgvisbench --dump-visible\n"
            "  writes the same files from OSG's side.\n"
-           "--pixels: also draw every view unculled and compare the frames pixel for pixel.\n"
+           "--pixels: also draw every view unculled and compare the frames pixel for pixel; a mode\n"
+           "  is conservative unless its name says approx (docs/visapi.md).\n"
            "--show: show the frames in a window (default: drawn off-screen in a hidden window).\n"
            "Exit status: 0 ok; 1 the model, the walk or GL failed, or (--pixels) a conservative mode's\n"
            "frame differs from the unculled one; 2 bad command line.\n";
