@@ -114,6 +114,7 @@ std::string benchUsage()
            "                    [--volume-face N] [--volume-eyes N] [--volume-repeat N]]\n"
            "                   [--volume-cells N]\n"
            "                   [--json OUT.json] [--report DIR [--pictures N]] [--explain] [--backoff on|off]\n"
+           "                   [--dump-visible DIR]\n"
            "                   [--help]\n"
            "\n"
            "Renders every mode over the same walk in one process and measures it against the\n"
@@ -127,6 +128,12 @@ std::string benchUsage()
            "  model has nowhere to stand).\n"
            "--save-walk FILE: write the walk followed (an automatic one, too) as a walk file, to edit\n"
            "  or replay with --walk FILE.\n"
+           "--dump-visible DIR: instead of the benchmark, write DIR/<mode>.visible for every module-chain\n"
+           "  mode: per view of the walk (after --views and --cube), the sorted canonical identities of\n"
+           "  the objects the chain answers visible, culled on the scene as a VisibilityGroup extracts it\n"
+           "  (glTF node path and primitive, \"n0/n3#p1\", for models read by osgVis's glTF plugin; object\n"
+           "  ids otherwise). No rendering; osgvisrawgl writes the same files from its own loader\n"
+           "  (docs/visapi.md, \"A renderer that is not OSG\").\n"
            "--cube: every walk key becomes six 90-degree square views (HxH, H the walk's height),\n"
            "  the faces of a cube around the eye, so every metric covers the full sphere.\n"
            "--speeds, --threads: also time each module-chain mode's cull alone (no rendering) with\n"
@@ -229,6 +236,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.walkFile = value();
         else if (flag == "--save-walk")
             options.saveWalkFile = value();
+        else if (flag == "--dump-visible")
+            options.dumpVisibleDir = value();
         else if (flag == "--modes")
             options.modes = splitList(value(), ',');
         else if (flag == "--views")
@@ -366,6 +375,12 @@ BenchOptions parseBenchOptions(int argc, char** argv)
         throw UsageError("--explain reads the rendered walk: not with --cull-only or --dynamic");
     if (options.cullOnly && !options.sweeps() && !options.maskSweep())
         throw UsageError("--cull-only needs a sweep: give --speeds, --threads and/or --mask-deltas");
+    if (!options.dumpVisibleDir.empty() &&
+        (options.cullOnly || options.dynamic || options.threadingTable() || !options.reportDir.empty() ||
+         options.explain || options.sweeps() || options.maskSweep() || !options.volume.empty() ||
+         options.volumeCells > 0 || !options.jsonFile.empty()))
+        throw UsageError("--dump-visible is a run of its own: no --cull-only, --dynamic, --threading, --async, "
+                         "--report, --explain, --json, --volume or sweeps");
     if (options.volumeCells > 0 && !options.volume.empty())
         throw UsageError("--volume-cells checks the cells of a baked .pvs: not with --volume");
     if (options.volumeCells > 0 &&

@@ -31,6 +31,7 @@ struct BenchOptions
     std::uint32_t seed = 1;           // --seed S, with --generate
     std::string walkFile;             // --walk FILE; empty: FILE.walk beside the scene, else automatic
     std::string saveWalkFile;         // --save-walk FILE: the walk as loaded or made (before --views)
+    std::string dumpVisibleDir;       // --dump-visible DIR: DIR/<mode>.visible per module chain, then exit
     std::vector<std::string> modes;   // --modes a,b,c (a module chain is written a+b)
     unsigned views = 0;               // --views N: subsample the walk evenly; 0 keeps every key
     unsigned width = 0, height = 0;   // --size WxH; 0: the walk's size

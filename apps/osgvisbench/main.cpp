@@ -11,6 +11,7 @@
 #include "ReportJson.h"
 #include "ReportTable.h"
 #include "BakedCellCheck.h"
+#include "VisibleDump.h"
 #include "VolumeBench.h"
 
 #include <SceneSource.h>
@@ -96,6 +97,10 @@ int main(int argc, char** argv)
             return 0;
         }
         modes = parseBenchModes(options.modes);
+        if (!options.dumpVisibleDir.empty())
+            for (const BenchMode& mode : modes)
+                if (mode.kind != BenchMode::Kind::ModuleChain)
+                    throw UsageError("--dump-visible writes what a module chain answers; '" + mode.name + "' is none");
     }
     catch (const std::exception& e)
     {
@@ -105,6 +110,11 @@ int main(int argc, char** argv)
 
     try
     {
+        if (!options.dumpVisibleDir.empty())
+        {
+            writeVisibleDumps(options, modes, std::cout);
+            return 0;
+        }
         if (!options.volume.empty())
             return runVolumeBench(options, std::cout);
         if (options.volumeCells > 0)

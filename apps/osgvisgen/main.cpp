@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: MIT
-// osgvisgen: writes a seeded test scene (.osgb or any format osgDB writes) and its walk beside it.
+// osgvisgen: writes a seeded test scene (.osgb or any format osgDB writes, or glTF through its own
+// writer) and its walk beside it.
+#include "GltfExport.h"
+
 #include <osgVis/gen/Generator.h>
 #include <osgVis/gen/SceneStats.h>
 
@@ -8,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -20,7 +24,10 @@ const char* usage =
     "       osgvisgen --list | --help\n"
     "\n"
     "Writes a generated scene to SCENE (format by extension, e.g. scene.osgb) and its walk to the\n"
-    "same path with the extension .walk (scene.walk), then prints one summary line.\n"
+    "same path with the extension .walk (scene.walk), then prints one summary line. SCENE.gltf or\n"
+    "SCENE.glb goes through osgvisgen's own minimal glTF writer: node hierarchy and matrices, and\n"
+    "positions and triangles only (no materials, normals or colours; occluder, cell and portal\n"
+    "markers are plain nodes there).\n"
     "\n"
     "  --kind K          office (furnished rooms and corridors), city (streets and buildings),\n"
     "                    tetra (tetrahedra on a plane) or floor (one office storey of 204 rooms, about\n"
@@ -57,6 +64,12 @@ std::uint64_t parseUnsigned(const std::string& option, const std::string& text, 
         throw UsageError(option + " " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) +
                          "]");
     return value;
+}
+
+bool isGltfPath(const std::string& path)
+{
+    const std::string extension = std::filesystem::path(path).extension().string();
+    return extension == ".gltf" || extension == ".glb" || extension == ".GLTF" || extension == ".GLB";
 }
 
 std::string walkPathFor(const std::string& scenePath)
@@ -170,7 +183,16 @@ int run(const Options& o)
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    if (!osgDB::writeNodeFile(*scene.root, o.output))
+    std::string gltfError;
+    if (isGltfPath(o.output))
+    {
+        if (!gen::writeGltf(*scene.root, o.output, gltfError))
+        {
+            std::cerr << "osgvisgen: " << gltfError << "\n";
+            return 1;
+        }
+    }
+    else if (!osgDB::writeNodeFile(*scene.root, o.output))
     {
         std::cerr << "osgvisgen: cannot write '" << o.output
                   << "' (missing directory, no permission, or no osgDB plugin for its extension)\n";

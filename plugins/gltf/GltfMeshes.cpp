@@ -5,6 +5,7 @@
 #include "GltfError.h"
 
 #include <osg/Geometry>
+#include <osg/ValueObject>
 #include <osgUtil/SmoothingVisitor>
 
 #include <algorithm>
@@ -173,8 +174,12 @@ osg::ref_ptr<osg::Geode> buildMesh(const tinygltf::Model& model, int meshIndex, 
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     geode->setName(mesh.name.empty() ? "mesh" + std::to_string(meshIndex) : mesh.name);
     for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
-        geode->addDrawable(
-            buildPrimitive(model, mesh.primitives[i], geode->getName() + "#" + std::to_string(i), materials).get());
+    {
+        osg::ref_ptr<osg::Geometry> geometry =
+            buildPrimitive(model, mesh.primitives[i], geode->getName() + "#" + std::to_string(i), materials);
+        geometry->setUserValue(GltfPrimitiveKey, int(i));
+        geode->addDrawable(geometry.get());
+    }
     return geode;
 }
 } // namespace osgVis::gltfplugin

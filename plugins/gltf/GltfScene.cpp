@@ -6,6 +6,7 @@
 #include "GltfMeshes.h"
 
 #include <osg/MatrixTransform>
+#include <osg/ValueObject>
 
 #include <map>
 #include <vector>
@@ -64,6 +65,9 @@ public:
         const tinygltf::Node& source = _model.nodes[i];
         osg::ref_ptr<osg::MatrixTransform> transform = new osg::MatrixTransform(nodeMatrix(source, nodeIndex));
         transform->setName(source.name.empty() ? "node" + std::to_string(nodeIndex) : source.name);
+        // The glTF node index, so that a renderer can name an object by its glTF node path whatever
+        // the names are (apps/common/GltfIdentity.h, docs/visapi.md).
+        transform->setUserValue(GltfNodeKey, nodeIndex);
         if (source.mesh >= 0)
             transform->addChild(mesh(source.mesh).get());
         for (int child : source.children)

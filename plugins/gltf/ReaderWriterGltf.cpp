@@ -8,6 +8,9 @@
 // - each glTF node is an osg::MatrixTransform named after it ("node<i>" when unnamed); each mesh an
 //   osg::Geode named after it ("mesh<i>"), shared by every node using it; each primitive an
 //   osg::Geometry "<mesh>#<primitive index>" with its material as state (GltfMaterials.h).
+// - user values "osgVis.gltf.node" (node index, on each node's MatrixTransform) and
+//   "osgVis.gltf.primitive" (primitive index, on each Geometry) name an object by its glTF node path
+//   and primitive, whatever the names (apps/common/GltfIdentity.h).
 // - external buffers and images resolve beside the file; for readNode(istream), through the
 //   options' database path list.
 // Malformed input is a ReadResult error "gltf: <file>: <what is wrong>", never a crash: every

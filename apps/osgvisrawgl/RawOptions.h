@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// osgvisrawgl's command line. Parsing only.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace osgVis::rawgl
+{
+struct UsageError : std::runtime_error
+{
+    using std::runtime_error::runtime_error;
+};
+
+struct RawOptions
+{
+    std::string model;                         // MODEL.gltf or MODEL.glb
+    std::string walk;                          // --walk FILE; empty: MODEL's stem + ".walk" beside it
+    std::vector<std::string> modes{"frustum"}; // --modes a,b,c (a chain is written a+b)
+    std::string dumpDir;                       // --dump-visible DIR
+    bool pixels = false;                       // --pixels
+    bool show = false;                         // --show
+    bool help = false;
+};
+
+// Throws UsageError naming the offending argument.
+RawOptions parseRawOptions(int argc, char** argv);
+std::string rawUsage();
+} // namespace osgVis::rawgl

@@ -1,0 +1,545 @@
+// SPDX-License-Identifier: MIT
+#include "RawScene.h"
+
+#include <osgVis/visapi.h>
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace osgVis::rawgl
+{
+namespace
+{
+constexpr double HalfPi = 1.57079632679489661923; // as OSG's osg::PI_2
+
+// this = other · this (OSG's Matrixd::preMult), each element a left-to-right sum of four products.
+void preMult(Matrix& self, const Matrix& other)
+{
+    Matrix out;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            out.m[r][c] = other.m[r][0] * self.m[0][c] + other.m[r][1] * self.m[1][c] + other.m[r][2] * self.m[2][c] +
+                          other.m[r][3] * self.m[3][c];
+    self = out;
+}
+
+// this = this · other (OSG's Matrixd::postMult).
+void postMult(Matrix& self, const Matrix& other)
+{
+    Matrix out;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            out.m[r][c] = self.m[r][0] * other.m[0][c] + self.m[r][1] * other.m[1][c] + self.m[r][2] * other.m[2][c] +
+                          self.m[r][3] * other.m[3][c];
+    self = out;
+}
+
+// The rotation of quaternion (x, y, z, w), normalised on the fly by 2/|q|² (OSG's Matrixd::setRotate);
+// a zero quaternion gives a zero 3×3 block.
+Matrix rotation(double x, double y, double z, double w)
+{
+    Matrix r;
+    const double length2 = x * x + y * y + z * z + w * w;
+    if (std::fabs(length2) <= std::numeric_limits<double>::min())
+    {
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                r.m[i][j] = 0.0;
+        return r;
+    }
+    const double s = length2 != 1.0 ? 2.0 / length2 : 2.0;
+    const double x2 = s * x, y2 = s * y, z2 = s * z;
+    const double xx = x * x2, xy = x * y2, xz = x * z2, yy = y * y2, yz = y * z2, zz = z * z2;
+    const double wx = w * x2, wy = w * y2, wz = w * z2;
+    r.m[0][0] = 1.0 - (yy + zz);
+    r.m[1][0] = xy - wz;
+    r.m[2][0] = xz + wy;
+    r.m[0][1] = xy + wz;
+    r.m[1][1] = 1.0 - (xx + zz);
+    r.m[2][1] = yz - wx;
+    r.m[0][2] = xz - wy;
+    r.m[1][2] = yz + wx;
+    r.m[2][2] = 1.0 - (xx + yy);
+    return r;
+}
+
+// glTF's Y-up to Z-up: +90° about +X through the quaternion (sin 45°, 0, 0, cos 45°), as the plugin's
+// osg::Matrixd::rotate(osg::PI_2, osg::X_AXIS).
+Matrix zUp()
+{
+    const double half = 0.5 * HalfPi;
+    return rotation(1.0 * std::sin(half) * 1.0, 0.0 * std::sin(half) * 1.0, 0.0 * std::sin(half) * 1.0, std::cos(half));
+}
+
+Matrix nodeMatrix(const tinygltf::Node& node, int index)
+{
+    const std::string where = "node " + std::to_string(index);
+    Matrix out;
+    if (!node.matrix.empty())
+    {
+        if (node.matrix.size() != 16)
+            throw SceneError(where + " has a matrix of " + std::to_string(node.matrix.size()) + " values, expected 16");
+        for (int i = 0; i < 16; ++i)
+            out.m[i / 4][i % 4] = node.matrix[std::size_t(i)]; // glTF's column-major array, as it is
+        return out;
+    }
+    if (!node.scale.empty() && node.scale.size() != 3)
+        throw SceneError(where + " has a scale of " + std::to_string(node.scale.size()) + " values, expected 3");
+    if (!node.rotation.empty() && node.rotation.size() != 4)
+        throw SceneError(where + " has a rotation of " + std::to_string(node.rotation.size()) + " values, expected 4");
+    if (!node.translation.empty() && node.translation.size() != 3)
+        throw SceneError(where + " has a translation of " + std::to_string(node.translation.size()) +
+                         " values, expected 3");
+    if (!node.scale.empty()) // M · S: column c scaled by s[c]
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 3; ++c)
+                out.m[r][c] *= node.scale[std::size_t(c)];
+    if (!node.rotation.empty())
+    {
+        const std::vector<double>& q = node.rotation;
+        if (!(q[0] == 0.0 && q[1] == 0.0 && q[2] == 0.0 && q[3] == 1.0)) // no rotation: nothing to multiply
+            postMult(out, rotation(q[0], q[1], q[2], q[3]));
+    }
+    if (!node.translation.empty()) // M · T
+        for (int c = 0; c < 3; ++c)
+        {
+            const double t = node.translation[std::size_t(c)];
+            if (t == 0)
+                continue;
+            for (int r = 0; r < 4; ++r)
+                out.m[r][c] += t * out.m[r][3];
+        }
+    return out;
+}
+
+// p = v · M, divided by the homogeneous coordinate as OSG's Vec3d * Matrixd does.
+void transform(const Matrix& world, const double v[3], double out[3])
+{
+    const double(&m)[4][4] = world.m;
+    const double d = 1.0 / (m[0][3] * v[0] + m[1][3] * v[1] + m[2][3] * v[2] + m[3][3]);
+    for (int c = 0; c < 3; ++c)
+        out[c] = (m[0][c] * v[0] + m[1][c] * v[1] + m[2][c] * v[2] + m[3][c]) * d;
+}
+
+bool finite3(const double v[3])
+{
+    return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+
+void check(bool holds, const std::string& what)
+{
+    if (!holds)
+        throw SceneError(what);
+}
+
+std::size_t componentBytes(int type)
+{
+    switch (type)
+    {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return 4;
+    default:
+        return 0;
+    }
+}
+
+// The checked bytes of an accessor: element i starts at data + i * stride. data is null for an
+// accessor without buffer view (all zeros).
+struct Elements
+{
+    const unsigned char* data = nullptr;
+    std::size_t count = 0, stride = 0, elementBytes = 0;
+};
+
+Elements elements(const tinygltf::Model& model, int index, const char* usage, int type, int componentType)
+{
+    const std::string name = "accessor " + std::to_string(index) + " (" + usage + ")";
+    check(index >= 0 && std::size_t(index) < model.accessors.size(), name + " does not exist");
+    const tinygltf::Accessor& accessor = model.accessors[std::size_t(index)];
+    check(!accessor.sparse.isSparse, name + " is sparse, which is not supported");
+    check(accessor.type == type,
+          name + " has type " + std::to_string(accessor.type) + ", expected " + std::to_string(type));
+    check(componentType < 0 || accessor.componentType == componentType,
+          name + " has component type " + std::to_string(accessor.componentType) + ", expected " +
+              std::to_string(componentType));
+    const std::size_t size = componentBytes(accessor.componentType);
+    check(size != 0, name + " has invalid component type " + std::to_string(accessor.componentType));
+    check(accessor.count <= (std::size_t(1) << 28), name + " has an implausible count");
+    Elements out;
+    out.count = accessor.count;
+    out.elementBytes = size * std::size_t(type == TINYGLTF_TYPE_SCALAR ? 1 : type == TINYGLTF_TYPE_VEC3 ? 3 : 4);
+    if (accessor.bufferView < 0)
+        return out;
+    check(std::size_t(accessor.bufferView) < model.bufferViews.size(),
+          name + ": no buffer view " + std::to_string(accessor.bufferView));
+    const tinygltf::BufferView& view = model.bufferViews[std::size_t(accessor.bufferView)];
+    check(view.buffer >= 0 && std::size_t(view.buffer) < model.buffers.size(),
+          name + ": its buffer view names no buffer");
+    const std::vector<unsigned char>& buffer = model.buffers[std::size_t(view.buffer)].data;
+    check(view.byteOffset <= buffer.size() && view.byteLength <= buffer.size() - view.byteOffset,
+          name + ": its buffer view reads past the end of its buffer");
+    out.stride = view.byteStride != 0 ? view.byteStride : out.elementBytes;
+    check(out.stride >= out.elementBytes, name + ": byte stride smaller than an element");
+    if (out.count > 0)
+    {
+        const bool strideFits = out.count == 1 || out.stride <= view.byteLength;
+        const std::size_t last = strideFits ? (out.count - 1) * out.stride : 0;
+        check(strideFits && accessor.byteOffset <= view.byteLength && last <= view.byteLength - accessor.byteOffset &&
+                  out.elementBytes <= view.byteLength - accessor.byteOffset - last,
+              name + " reads past the end of its buffer view");
+    }
+    out.data = buffer.data() + view.byteOffset + accessor.byteOffset;
+    return out;
+}
+
+std::vector<float> readVec3(const tinygltf::Model& model, int index, const char* usage)
+{
+    const Elements e = elements(model, index, usage, TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_FLOAT);
+    std::vector<float> values(3 * e.count, 0.0f);
+    if (e.data)
+        for (std::size_t i = 0; i < e.count; ++i)
+            std::memcpy(&values[3 * i], e.data + i * e.stride, 3 * sizeof(float));
+    return values;
+}
+
+std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int index, std::size_t vertexCount)
+{
+    const std::string name = "accessor " + std::to_string(index) + " (indices)";
+    const Elements e = elements(model, index, "indices", TINYGLTF_TYPE_SCALAR, -1);
+    const int type = model.accessors[std::size_t(index)].componentType;
+    check(type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+              type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+          name + " is not unsigned byte, short or int");
+    std::vector<std::uint32_t> indices(e.count, 0);
+    if (!e.data)
+        return indices;
+    for (std::size_t i = 0; i < e.count; ++i)
+    {
+        const unsigned char* at = e.data + i * e.stride;
+        std::uint32_t value = 0;
+        if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE)
+            value = *at;
+        else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
+        {
+            std::uint16_t v16;
+            std::memcpy(&v16, at, 2);
+            value = v16;
+        }
+        else
+            std::memcpy(&value, at, 4);
+        check(value < vertexCount, name + ": index " + std::to_string(value) + " is out of range");
+        indices[i] = value;
+    }
+    return indices;
+}
+
+// The corners of the triangles a triangle-mode primitive draws, three per triangle, in the order and
+// winding OSG's TriangleFunctor reports them (strips alternate, fans turn around their first vertex).
+std::vector<std::uint32_t> triangleCorners(int mode, const std::vector<std::uint32_t>& drawn)
+{
+    std::vector<std::uint32_t> corners;
+    const std::size_t n = drawn.size();
+    if (mode == TINYGLTF_MODE_TRIANGLES)
+    {
+        // note: a trailing incomplete triangle is left out (OSG would read past the index list).
+        for (std::size_t i = 0; i + 2 < n; i += 3)
+            corners.insert(corners.end(), {drawn[i], drawn[i + 1], drawn[i + 2]});
+    }
+    else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP)
+    {
+        for (std::size_t i = 2; i < n; ++i)
+            if (i % 2)
+                corners.insert(corners.end(), {drawn[i - 2], drawn[i], drawn[i - 1]});
+            else
+                corners.insert(corners.end(), {drawn[i - 2], drawn[i - 1], drawn[i]});
+    }
+    else if (mode == TINYGLTF_MODE_TRIANGLE_FAN)
+    {
+        for (std::size_t i = 2; i < n; ++i)
+            corners.insert(corners.end(), {drawn[0], drawn[i - 1], drawn[i]});
+    }
+    return corners;
+}
+
+// Flags the OSG adapter derives from the state the plugin gives a glTF material: BLEND → transparent
+// (blending, transparent bin), MASK → no automatic occluder (alpha test), one-sided → back faces culled.
+std::uint32_t materialFlags(const tinygltf::Material& material)
+{
+    std::uint32_t flags = 0;
+    if (material.alphaMode == "BLEND")
+        flags |= OSGVIS_OBJECT_TRANSPARENT;
+    else if (material.alphaMode == "MASK")
+        flags |= OSGVIS_OBJECT_NO_AUTO_OCCLUDER;
+    if (!material.doubleSided)
+        flags |= OSGVIS_OBJECT_CULL_BACK;
+    return flags;
+}
+
+class Flattener
+{
+public:
+    Flattener(const tinygltf::Model& model, RawScene& out) : _model(model), _out(out), _onPath(model.nodes.size()) {}
+
+    void node(int index, const Matrix& parentWorld, const std::string& parentPath)
+    {
+        check(index >= 0 && std::size_t(index) < _model.nodes.size(),
+              (parentPath.empty() ? std::string("the scene") : "a node") + " names node " + std::to_string(index) +
+                  ", but there are " + std::to_string(_model.nodes.size()));
+        check(!_onPath[std::size_t(index)], "node " + std::to_string(index) + " is its own ancestor");
+        _onPath[std::size_t(index)] = true;
+        const tinygltf::Node& source = _model.nodes[std::size_t(index)];
+        Matrix world = parentWorld;
+        preMult(world, nodeMatrix(source, index)); // OSG's computeLocalToWorld: local · parent
+        const std::string path = (parentPath.empty() ? "n" : parentPath + "/n") + std::to_string(index);
+        if (source.mesh >= 0)
+            mesh(source.mesh, world, path);
+        for (int child : source.children)
+            node(child, world, path);
+        _onPath[std::size_t(index)] = false;
+    }
+
+private:
+    void mesh(int index, const Matrix& world, const std::string& path)
+    {
+        check(std::size_t(index) < _model.meshes.size(),
+              "a node names mesh " + std::to_string(index) + ", but there are " + std::to_string(_model.meshes.size()));
+        const tinygltf::Mesh& mesh = _model.meshes[std::size_t(index)];
+        check(!mesh.primitives.empty(), "mesh " + std::to_string(index) + " has no primitives");
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+            _out.objects.push_back(object(mesh.primitives[p], world, path + "#p" + std::to_string(p),
+                                          "mesh " + std::to_string(index) + " primitive " + std::to_string(p)));
+    }
+
+    RawObject object(const tinygltf::Primitive& primitive, const Matrix& world, const std::string& identity,
+                     const std::string& where)
+    {
+        check(!primitive.extensions.count("KHR_draco_mesh_compression"), where + " is Draco-compressed");
+        RawObject out;
+        out.identity = identity;
+        out.world = world;
+        const auto position = primitive.attributes.find("POSITION");
+        check(position != primitive.attributes.end(), where + " has no POSITION attribute");
+        const std::vector<float> positions = readVec3(_model, position->second, "POSITION");
+        const std::size_t vertexCount = positions.size() / 3;
+        std::vector<float> normals;
+        const auto normal = primitive.attributes.find("NORMAL");
+        if (normal != primitive.attributes.end())
+        {
+            normals = readVec3(_model, normal->second, "NORMAL");
+            check(normals.size() == positions.size(), where + ": NORMAL and POSITION differ in count");
+        }
+
+        tinygltf::Material material; // glTF's default material: opaque, one-sided, white
+        if (primitive.material >= 0)
+        {
+            check(std::size_t(primitive.material) < _model.materials.size(),
+                  where + " names material " + std::to_string(primitive.material) + ", which does not exist");
+            material = _model.materials[std::size_t(primitive.material)];
+        }
+        out.flags = materialFlags(material);
+        const std::vector<double>& base = material.pbrMetallicRoughness.baseColorFactor;
+        for (std::size_t i = 0; i < 4 && i < base.size(); ++i)
+            out.color[i] = float(base[i]);
+
+        // The vertices drawn, in order: the index list, or every vertex for a primitive without one.
+        std::vector<std::uint32_t> drawn;
+        if (primitive.indices >= 0)
+            drawn = readIndices(_model, primitive.indices, vertexCount);
+        else
+            for (std::size_t i = 0; i < vertexCount; ++i)
+                drawn.push_back(std::uint32_t(i));
+
+        // Bounds over the vertices drawn (every vertex when none is), as the adapter's extraction.
+        std::vector<bool> used(vertexCount, drawn.empty());
+        for (std::uint32_t i : drawn)
+            used[i] = true;
+        bool nonFinite = false;
+        for (std::size_t i = 0; i < vertexCount; ++i)
+        {
+            if (!used[i])
+                continue;
+            const double local[3] = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
+            double p[3];
+            transform(world, local, p);
+            if (!finite3(local) || !finite3(p))
+            {
+                nonFinite = true;
+                continue;
+            }
+            for (int c = 0; c < 3; ++c)
+            {
+                out.boundsMin[c] = std::min(out.boundsMin[c], p[c]);
+                out.boundsMax[c] = std::max(out.boundsMax[c], p[c]);
+            }
+        }
+        if (nonFinite)
+            out.flags |= OSGVIS_OBJECT_ALWAYS_VISIBLE;
+
+        switch (primitive.mode)
+        {
+        case TINYGLTF_MODE_TRIANGLES:
+        case TINYGLTF_MODE_TRIANGLE_STRIP:
+        case TINYGLTF_MODE_TRIANGLE_FAN:
+            out.topology = Topology::Triangles;
+            break;
+        case TINYGLTF_MODE_LINE:
+            out.topology = Topology::Lines;
+            break;
+        case TINYGLTF_MODE_LINE_STRIP:
+            out.topology = Topology::LineStrip;
+            break;
+        case TINYGLTF_MODE_LINE_LOOP:
+            out.topology = Topology::LineLoop;
+            break;
+        case TINYGLTF_MODE_POINTS:
+            out.topology = Topology::Points;
+            break;
+        default:
+            throw SceneError(where + " has unknown mode " + std::to_string(primitive.mode));
+        }
+        if (out.topology != Topology::Triangles)
+        {
+            for (std::uint32_t i : drawn)
+                out.positions.insert(out.positions.end(), &positions[3 * i], &positions[3 * i] + 3);
+            return out;
+        }
+
+        const std::vector<std::uint32_t> corners = triangleCorners(primitive.mode, drawn);
+        for (std::size_t t = 0; t + 2 < corners.size(); t += 3)
+        {
+            float w[9];
+            bool finite = true;
+            for (int k = 0; k < 3; ++k)
+            {
+                const std::uint32_t i = corners[t + std::size_t(k)];
+                const double local[3] = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
+                double p[3];
+                transform(world, local, p);
+                finite = finite && finite3(p);
+                for (int c = 0; c < 3; ++c)
+                    w[3 * k + c] = float(p[c]);
+            }
+            // note: a triangle with a non-finite corner is neither kept for culling nor drawn; its
+            // object is always visible (the bounds pass flagged it).
+            if (!finite)
+                continue;
+            out.worldTriangles.insert(out.worldTriangles.end(), w, w + 9);
+            float faceNormal[3] = {0, 0, 0};
+            if (normals.empty())
+            {
+                const float* a = &positions[3 * corners[t]];
+                const float* b = &positions[3 * corners[t + 1]];
+                const float* c = &positions[3 * corners[t + 2]];
+                const float u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+                const float v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+                faceNormal[0] = u[1] * v[2] - u[2] * v[1];
+                faceNormal[1] = u[2] * v[0] - u[0] * v[2];
+                faceNormal[2] = u[0] * v[1] - u[1] * v[0];
+            }
+            for (int k = 0; k < 3; ++k)
+            {
+                const std::uint32_t i = corners[t + std::size_t(k)];
+                out.positions.insert(out.positions.end(), &positions[3 * i], &positions[3 * i] + 3);
+                if (normals.empty())
+                    out.normals.insert(out.normals.end(), faceNormal, faceNormal + 3);
+                else
+                    out.normals.insert(out.normals.end(), &normals[3 * i], &normals[3 * i] + 3);
+            }
+        }
+        return out;
+    }
+
+    const tinygltf::Model& _model;
+    RawScene& _out;
+    std::vector<bool> _onPath;
+};
+
+// Images are not drawn (objects are lit by their normal in their base colour): keep none.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*)
+{
+    return true;
+}
+
+bool hasSuffix(const std::string& text, const std::string& suffix)
+{
+    if (text.size() < suffix.size())
+        return false;
+    for (std::size_t i = 0; i < suffix.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(text[text.size() - suffix.size() + i])) != suffix[i])
+            return false;
+    return true;
+}
+} // namespace
+
+RawScene loadRawScene(const std::string& path)
+{
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&skipImage, nullptr);
+    tinygltf::Model model;
+    std::string error, warning;
+    bool loaded = false;
+    try
+    {
+        loaded = hasSuffix(path, ".glb") ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
+                                         : loader.LoadASCIIFromFile(&model, &error, &warning, path);
+    }
+    catch (const std::exception& e)
+    {
+        throw SceneError(path + ": tinygltf failed: " + e.what());
+    }
+    while (!error.empty() && error.back() == '\n')
+        error.pop_back();
+    if (!loaded)
+        throw SceneError(path + ": " + (error.empty() ? std::string("tinygltf cannot read it") : error));
+    for (const std::string& extension : model.extensionsRequired)
+        throw SceneError(path + ": required extension " + extension + " is not supported");
+
+    std::vector<int> roots;
+    if (!model.scenes.empty())
+    {
+        if (model.defaultScene >= int(model.scenes.size()))
+            throw SceneError(path + ": the default scene is " + std::to_string(model.defaultScene) +
+                             ", but there are " + std::to_string(model.scenes.size()) + " scenes");
+        roots = model.scenes[std::size_t(std::max(model.defaultScene, 0))].nodes;
+    }
+    else
+    {
+        // No scene: every node that is no node's child, in index order.
+        std::vector<bool> isChild(model.nodes.size(), false);
+        for (const tinygltf::Node& node : model.nodes)
+            for (int child : node.children)
+                if (child >= 0 && std::size_t(child) < model.nodes.size())
+                    isChild[std::size_t(child)] = true;
+        for (std::size_t i = 0; i < model.nodes.size(); ++i)
+            if (!isChild[i])
+                roots.push_back(int(i));
+    }
+
+    RawScene scene;
+    try
+    {
+        Matrix root; // identity, then the Z-up rotation, as OSG's path from the plugin's root starts
+        preMult(root, zUp());
+        Flattener flattener(model, scene);
+        for (int node : roots)
+            flattener.node(node, root, "");
+    }
+    catch (const SceneError& e)
+    {
+        throw SceneError(path + ": " + e.what());
+    }
+    return scene;
+}
+} // namespace osgVis::rawgl

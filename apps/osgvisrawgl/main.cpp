@@ -1,0 +1,304 @@
+// SPDX-License-Identifier: MIT
+// osgvisrawgl: a renderer that is not OSG, hosting osgVis through its C interface only. It reads a
+// glTF model with tinygltf into its own scene (RawScene.h), hands every object to an osgvis_context
+// (bounds, flags, world triangles), culls each view of a walk with osgvis_cull and draws
+// osgvis_visible_ids with OpenGL 3.3 core (RawRenderer.h). It links osgVis::Core, GLFW and tinygltf,
+// never OSG: culling goes through <osgVis/visapi.h>; the walk file is read by the core's
+// OSG-free Walk parser. docs/visapi.md, "A renderer that is not OSG", has the comparison with the OSG
+// adapter that this program exists for.
+#include "RawOptions.h"
+#include "RawRenderer.h"
+#include "RawScene.h"
+
+#include <osgVis/core/scene/Walk.h>
+#include <osgVis/visapi.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+namespace
+{
+using namespace osgVis::rawgl;
+
+struct RunError : std::runtime_error
+{
+    using std::runtime_error::runtime_error;
+};
+
+void require(osgvis_status status)
+{
+    if (status != OSGVIS_OK)
+        throw RunError(osgvis_last_error());
+}
+
+struct ContextDeleter
+{
+    void operator()(osgvis_context* context) const { osgvis_context_destroy(context); }
+};
+using Context = std::unique_ptr<osgvis_context, ContextDeleter>;
+
+// One mode: its own context (scene copy, module chain and temporal state) and its figures.
+struct ModeRun
+{
+    std::string name;
+    Context context;
+    bool conservative = true; // approximate modes say so in their name (docs/visapi.md)
+    std::ofstream dump;
+    std::vector<double> cullMs;
+    double visibleSum = 0;
+    std::size_t differingPixels = 0, viewsWithDifferences = 0;
+};
+
+Context makeContext(const RawScene& scene, const std::string& mode)
+{
+    osgvis_context* raw = nullptr;
+    require(osgvis_context_create(&raw));
+    Context context(raw);
+    for (const RawObject& object : scene.objects)
+    {
+        osgvis_object_desc desc{};
+        std::copy(object.boundsMin, object.boundsMin + 3, desc.bounds_min);
+        std::copy(object.boundsMax, object.boundsMax + 3, desc.bounds_max);
+        desc.flags = object.flags;
+        desc.triangle_count = object.triangleCount();
+        desc.triangles = object.worldTriangles.empty() ? nullptr : object.worldTriangles.data();
+        desc.name = object.identity.c_str();
+        require(osgvis_scene_add_object(context.get(), &desc, nullptr));
+    }
+    require(osgvis_context_set_mode(context.get(), mode.c_str()));
+    return context;
+}
+
+// FNV-1a over the bits of an object's world triangles: equal hashes, equal triangles.
+std::uint64_t triangleHash(const std::vector<float>& triangles)
+{
+    std::uint64_t hash = 1469598103934665603ull;
+    for (float value : triangles)
+    {
+        std::uint32_t bits;
+        std::memcpy(&bits, &value, sizeof bits);
+        for (int b = 0; b < 4; ++b)
+        {
+            hash ^= (bits >> (8 * b)) & 0xffu;
+            hash *= 1099511628211ull;
+        }
+    }
+    return hash;
+}
+
+void writeObjects(const std::filesystem::path& path, const RawScene& scene)
+{
+    std::ofstream out(path);
+    out << "# osgvis-objects 1\n# objects " << scene.objects.size() << "\n";
+    char line[512];
+    for (const RawObject& o : scene.objects)
+    {
+        std::snprintf(line, sizeof line,
+                      " flags %u triangles %u bounds %.17g %.17g %.17g %.17g %.17g %.17g hash %016llx", o.flags,
+                      o.triangleCount(), o.boundsMin[0], o.boundsMin[1], o.boundsMin[2], o.boundsMax[0], o.boundsMax[1],
+                      o.boundsMax[2], static_cast<unsigned long long>(triangleHash(o.worldTriangles)));
+        out << o.identity << line << "\n";
+    }
+    if (!out)
+        throw RunError("cannot write '" + path.string() + "'");
+}
+
+std::string walkPathFor(const RawOptions& options)
+{
+    if (!options.walk.empty())
+        return options.walk;
+    std::filesystem::path beside(options.model);
+    beside.replace_extension(".walk");
+    if (std::filesystem::exists(beside))
+        return beside.string();
+    throw RunError("no walk: '" + beside.string() + "' does not exist; give --walk FILE (osgvisbench --scene " +
+                   options.model + " --save-walk FILE writes one)");
+}
+
+double median(std::vector<double> values)
+{
+    if (values.empty())
+        return 0.0;
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+int run(const RawOptions& options)
+{
+    if (!std::filesystem::is_regular_file(options.model))
+        throw RunError("cannot read model '" + options.model + "': no such file");
+    const RawScene scene = loadRawScene(options.model);
+    if (scene.objects.empty())
+        throw RunError("model '" + options.model + "' has no mesh primitives: nothing to draw");
+    osgVis::core::Walk walk;
+    try
+    {
+        walk = osgVis::core::Walk::load(walkPathFor(options));
+    }
+    catch (const osgVis::core::WalkError& e)
+    {
+        throw RunError(e.what());
+    }
+
+    std::vector<ModeRun> modes;
+    for (const std::string& name : options.modes)
+    {
+        ModeRun mode;
+        mode.name = name;
+        mode.conservative = name.find("approx") == std::string::npos;
+        mode.context = makeContext(scene, name);
+        modes.push_back(std::move(mode));
+    }
+    if (!options.dumpDir.empty())
+    {
+        std::error_code error;
+        std::filesystem::create_directories(options.dumpDir, error);
+        if (!std::filesystem::is_directory(options.dumpDir))
+            throw RunError("cannot create the folder '" + options.dumpDir + "'");
+        writeObjects(std::filesystem::path(options.dumpDir) / "objects.txt", scene);
+        for (ModeRun& mode : modes)
+        {
+            const std::filesystem::path path = std::filesystem::path(options.dumpDir) / (mode.name + ".visible");
+            mode.dump.open(path);
+            if (!mode.dump)
+                throw RunError("cannot write '" + path.string() + "'");
+            mode.dump << "# osgvis-visible 1\n# mode " << mode.name << " views " << walk.keys.size() << " objects "
+                      << scene.objects.size() << "\n";
+        }
+    }
+    std::cerr << "scene: " << options.model << " (" << scene.objects.size() << " objects), walk: " << walk.keys.size()
+              << " views at " << walk.width << "x" << walk.height << std::endl;
+
+    RawRenderer renderer(scene, walk.width, walk.height, options.show);
+    const glm::dmat4 projection = walk.projection.matrix(walk.aspect());
+    std::vector<std::uint8_t> unculled, culled;
+    std::vector<std::uint32_t> ids(scene.objects.size());
+    std::vector<bool> drawn(scene.objects.size());
+    std::vector<std::string> names;
+    std::size_t coveredPixels = 0, framePixels = 0; // of the unculled frames: is there anything to compare?
+    for (std::size_t v = 0; v < walk.keys.size() && renderer.open(); ++v)
+    {
+        const osgVis::core::WalkKey& key = walk.keys[v];
+        const glm::dmat4 view = key.viewMatrix();
+        if (options.pixels)
+        {
+            renderer.render(view, projection, {});
+            renderer.readPixels(unculled);
+            for (std::size_t p = 0; p + 3 < unculled.size(); p += 4)
+                coveredPixels += std::memcmp(&unculled[p], RawRenderer::ClearColor, 4) != 0;
+            framePixels += unculled.size() / 4;
+        }
+        osgvis_view_desc desc{};
+        std::memcpy(desc.view_matrix, glm::value_ptr(view), sizeof desc.view_matrix);
+        std::memcpy(desc.projection_matrix, glm::value_ptr(projection), sizeof desc.projection_matrix);
+        desc.time = key.time;
+        desc.viewport_width = walk.width;
+        desc.viewport_height = walk.height;
+        for (ModeRun& mode : modes)
+        {
+            require(osgvis_cull(mode.context.get(), &desc));
+            size_t written = 0, count = 0;
+            require(osgvis_visible_ids(mode.context.get(), ids.data(), ids.size(), &written, &count));
+            osgvis_statistics statistics{};
+            require(osgvis_statistics_get(mode.context.get(), &statistics));
+            mode.cullMs.push_back(statistics.cull_milliseconds);
+            mode.visibleSum += double(written);
+            std::fill(drawn.begin(), drawn.end(), false);
+            names.clear();
+            for (std::size_t i = 0; i < written; ++i)
+            {
+                drawn[ids[i]] = true;
+                names.push_back(scene.objects[ids[i]].identity);
+            }
+            if (mode.dump.is_open())
+            {
+                std::sort(names.begin(), names.end());
+                mode.dump << v << " " << names.size();
+                for (const std::string& name : names)
+                    mode.dump << " " << name;
+                mode.dump << "\n";
+            }
+            renderer.render(view, projection, drawn);
+            if (options.pixels)
+            {
+                renderer.readPixels(culled);
+                std::size_t differing = 0;
+                for (std::size_t p = 0; p + 3 < culled.size(); p += 4)
+                    differing += std::memcmp(&culled[p], &unculled[p], 4) != 0;
+                mode.differingPixels += differing;
+                mode.viewsWithDifferences += differing != 0;
+            }
+        }
+    }
+
+    int status = 0;
+    if (options.pixels)
+        std::cout << "unculled frames: " << std::fixed << std::setprecision(1)
+                  << (framePixels ? 100.0 * double(coveredPixels) / double(framePixels) : 0.0)
+                  << "% of the pixels show an object\n";
+    std::cout << std::left << std::setw(24) << "mode" << std::right << std::setw(7) << "views" << std::setw(12)
+              << "visible" << std::setw(10) << "cull ms" << (options.pixels ? "   pixels differing (views)" : "")
+              << "\n";
+    for (ModeRun& mode : modes)
+    {
+        const std::size_t views = mode.cullMs.size();
+        std::cout << std::left << std::setw(24) << mode.name << std::right << std::setw(7) << views << std::setw(12)
+                  << std::fixed << std::setprecision(1) << (views ? mode.visibleSum / double(views) : 0.0)
+                  << std::setw(10) << std::setprecision(3) << median(mode.cullMs);
+        if (options.pixels)
+            std::cout << std::setw(19) << mode.differingPixels << " (" << mode.viewsWithDifferences << ")";
+        std::cout << "\n";
+        if (mode.dump.is_open())
+        {
+            mode.dump.close();
+            if (!mode.dump)
+                throw RunError("cannot write the visible sets of mode '" + mode.name + "'");
+        }
+        if (options.pixels && mode.conservative && mode.differingPixels != 0)
+        {
+            std::cerr << "osgvisrawgl: FAIL: conservative mode '" << mode.name << "' drew " << mode.differingPixels
+                      << " pixels differently from the unculled frame in " << mode.viewsWithDifferences << " views"
+                      << std::endl;
+            status = 1;
+        }
+    }
+    std::cout.flush();
+    return status;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+    RawOptions options;
+    try
+    {
+        options = parseRawOptions(argc, argv);
+    }
+    catch (const UsageError& e)
+    {
+        std::cerr << "osgvisrawgl: " << e.what() << "\n" << rawUsage();
+        return 2;
+    }
+    if (options.help)
+    {
+        std::cout << rawUsage();
+        return 0;
+    }
+    try
+    {
+        return run(options);
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "osgvisrawgl: error: " << e.what() << std::endl;
+        return 1;
+    }
+}
