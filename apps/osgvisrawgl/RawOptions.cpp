@@ -8,7 +8,7 @@ namespace osgVis::rawgl
 std::string rawUsage()
 {
     return "usage: osgvisrawgl MODEL.gltf|MODEL.glb [--walk FILE.walk] [--modes frustum,octree,...]\n"
-           "                   [--dump-visible DIR] [--pixels] [--show] [--help]\n"
+           "                   [--dump-visible DIR] [--pixels] [--hierarchy] [--show] [--help]\n"
            "\n"
            "A renderer that is not OSG: reads the glTF model with tinygltf into its own scene, culls\n"
            "every view of the walk through osgVis's C interface (osgVis/visapi.h) and draws the\n"
@@ -26,6 +26,9 @@ std::string rawUsage()
            "  writes the same files from OSG's side.\n"
            "--pixels: also draw every view unculled and compare the frames pixel for pixel; a mode\n"
            "  is conservative unless its name says approx (docs/visapi.md).\n"
+           "--hierarchy: hand osgVis this program's own hierarchy, the glTF node instances as boxes\n"
+           "  (overlapping), walked by callback; modes that walk a hierarchy (cdt) walk it instead of\n"
+           "  their own tree, by depth only since the boxes overlap (docs/visapi.md).\n"
            "--show: show the frames in a window (default: drawn off-screen in a hidden window).\n"
            "Exit status: 0 ok; 1 the model, the walk or GL failed, or (--pixels) a conservative mode's\n"
            "frame differs from the unculled one; 2 bad command line.\n";
@@ -70,6 +73,8 @@ RawOptions parseRawOptions(int argc, char** argv)
             options.pixels = true;
         else if (arg == "--show")
             options.show = true;
+        else if (arg == "--hierarchy")
+            options.hierarchy = true;
         else if (!arg.empty() && arg[0] == '-')
             throw UsageError("unknown option '" + arg + "'");
         else if (!options.model.empty())

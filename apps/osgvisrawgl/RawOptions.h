@@ -20,6 +20,7 @@ struct RawOptions
     std::string dumpDir;                       // --dump-visible DIR
     bool pixels = false;                       // --pixels
     bool show = false;                         // --show
+    bool hierarchy = false;                    // --hierarchy
     bool help = false;
 };
 

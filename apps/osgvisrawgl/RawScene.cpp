@@ -292,7 +292,8 @@ class Flattener
 public:
     Flattener(const tinygltf::Model& model, RawScene& out) : _model(model), _out(out), _onPath(model.nodes.size()) {}
 
-    void node(int index, const Matrix& parentWorld, const std::string& parentPath)
+    // Returns the node instance's index in RawScene::nodes.
+    std::uint32_t node(int index, const Matrix& parentWorld, const std::string& parentPath)
     {
         check(index >= 0 && std::size_t(index) < _model.nodes.size(),
               (parentPath.empty() ? std::string("the scene") : "a node") + " names node " + std::to_string(index) +
@@ -303,11 +304,22 @@ public:
         Matrix world = parentWorld;
         preMult(world, nodeMatrix(source, index)); // OSG's computeLocalToWorld: local · parent
         const std::string path = (parentPath.empty() ? "n" : parentPath + "/n") + std::to_string(index);
+        const auto instance = std::uint32_t(_out.nodes.size());
+        _out.nodes.emplace_back();
         if (source.mesh >= 0)
+        {
+            const auto first = std::uint32_t(_out.objects.size());
             mesh(source.mesh, world, path);
+            for (auto id = first; id < _out.objects.size(); ++id)
+                _out.nodes[instance].objects.push_back(id);
+        }
         for (int child : source.children)
-            node(child, world, path);
+        {
+            const std::uint32_t c = node(child, world, path);
+            _out.nodes[instance].children.push_back(c);
+        }
         _onPath[std::size_t(index)] = false;
+        return instance;
     }
 
 private:
@@ -534,7 +546,7 @@ RawScene loadRawScene(const std::string& path)
         preMult(root, zUp());
         Flattener flattener(model, scene);
         for (int node : roots)
-            flattener.node(node, root, "");
+            scene.rootNodes.push_back(flattener.node(node, root, ""));
     }
     catch (const SceneError& e)
     {

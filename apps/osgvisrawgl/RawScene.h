@@ -62,9 +62,17 @@ struct RawObject
     std::uint32_t triangleCount() const { return std::uint32_t(worldTriangles.size() / 9); }
 };
 
+// A node instance of the flattened scene: the objects of its own mesh and its child instances.
+struct RawNode
+{
+    std::vector<std::uint32_t> objects, children;
+};
+
 struct RawScene
 {
     std::vector<RawObject> objects;
+    std::vector<RawNode> nodes;           // every node instance, depth first
+    std::vector<std::uint32_t> rootNodes; // the scene's root instances
 };
 
 // Reads `path` (.gltf or .glb). Throws SceneError naming what is wrong (unreadable file, parse

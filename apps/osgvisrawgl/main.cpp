@@ -6,6 +6,7 @@
 // never OSG: culling goes through <osgVis/visapi.h>; the walk file is read by the core's
 // OSG-free Walk parser. docs/visapi.md, "A renderer that is not OSG", has the comparison with the OSG
 // adapter that this program exists for.
+#include "RawHierarchy.h"
 #include "RawOptions.h"
 #include "RawRenderer.h"
 #include "RawScene.h"
@@ -57,7 +58,7 @@ struct ModeRun
     std::size_t differingPixels = 0, viewsWithDifferences = 0;
 };
 
-Context makeContext(const RawScene& scene, const std::string& mode)
+Context makeContext(const RawScene& scene, const std::string& mode, RawHierarchy* hierarchy)
 {
     osgvis_context* raw = nullptr;
     require(osgvis_context_create(&raw));
@@ -72,6 +73,11 @@ Context makeContext(const RawScene& scene, const std::string& mode)
         desc.triangles = object.worldTriangles.empty() ? nullptr : object.worldTriangles.data();
         desc.name = object.identity.c_str();
         require(osgvis_scene_add_object(context.get(), &desc, nullptr));
+    }
+    if (hierarchy)
+    {
+        const osgvis_hierarchy_desc desc = hierarchy->desc();
+        require(osgvis_scene_set_hierarchy(context.get(), &desc));
     }
     require(osgvis_context_set_mode(context.get(), mode.c_str()));
     return context;
@@ -148,13 +154,14 @@ int run(const RawOptions& options)
         throw RunError(e.what());
     }
 
+    std::unique_ptr<RawHierarchy> hierarchy = options.hierarchy ? std::make_unique<RawHierarchy>(scene) : nullptr;
     std::vector<ModeRun> modes;
     for (const std::string& name : options.modes)
     {
         ModeRun mode;
         mode.name = name;
         mode.conservative = name.find("approx") == std::string::npos;
-        mode.context = makeContext(scene, name);
+        mode.context = makeContext(scene, name, hierarchy.get());
         modes.push_back(std::move(mode));
     }
     if (!options.dumpDir.empty())

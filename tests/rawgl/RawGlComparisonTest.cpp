@@ -118,6 +118,17 @@ TEST(RawGl, EngineSameObjectsAndVisibleSetsAsOsgAdapterAndSamePixels)
     ASSERT_EQ(walk.exitCode, 0) << walk.output;
     saveThinnedWalk(dir / "auto.walk", dir / "engine.walk", 4);
     compareRenderers(model, dir / "engine.walk", dir, "2CylinderEngine");
+
+    // The renderer's own hierarchy (glTF node boxes, overlapping) handed over by callback: cdt walks
+    // it by depth only, and its frames still equal the unculled ones.
+    const AppRun walked = runApp(OSGVIS_RAWGL_EXE, quoted(model) + " --walk " + quoted(dir / "engine.walk") +
+                                                       " --modes cdt,cdt-depthfree --hierarchy --pixels");
+    std::cout << walked.output;
+    ASSERT_EQ(walked.exitCode, 0) << walked.output;
+    for (const char* mode : {"cdt", "cdt-depthfree"})
+        EXPECT_TRUE(std::regex_search(walked.output, std::regex(std::string("\\n") + mode + " +[0-9]+ .* 0 \\(0\\)\\n")))
+            << mode << " on the renderer's hierarchy:\n"
+            << walked.output;
 }
 
 TEST(RawGl, GeneratedCityExportedToGltfSameVisibleSetsAndSamePixels)
