@@ -10,6 +10,7 @@
 #include <osgVis/ViewCuller>
 #include <osgVis/VisibilityGroup>
 #include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/visapi.h>
 
 #include <osg/Geode>
 
@@ -67,7 +68,8 @@ TEST(PluginMode, BrokenPluginIsRefusedWithItsFileAndReason)
     {
         EXPECT_EQ(std::string(e.what()), "mode 'broken-version': plugin " OSGVIS_BROKEN_MODULE_DIR
                                          "/osgvis_module_broken-version.so: built against visapi 2.0, this "
-                                         "osgVis has 1.0");
+                                         "osgVis has 1." +
+                                             std::to_string(OSGVIS_VISAPI_VERSION_MINOR));
     }
     unsetenv("OSGVIS_MODULE_PATH");
 }
