@@ -4,8 +4,11 @@
 #include "Progress.h"
 
 #include <osgVis/oracle/IdBufferOracle.h>
+#include <osgVis/oracle/TriangleIdOracle.h>
 
+#include <algorithm>
 #include <iostream>
+#include <memory>
 #include <utility>
 
 namespace osgVis::bench
@@ -42,12 +45,59 @@ core::VisibleSet objectsInFrustum(const core::Scene& scene, const core::Frustum&
             inside.set(object.id);
     return inside;
 }
+// Clusters (docs/clusters.md) are finer than the ID buffer's objects: a clustered drawable the ID
+// buffer sees is narrowed to the clusters that own a triangle in the triangle-ID render (at the
+// supersampled size). One it sees whose triangles the triangle render missed keeps every cluster.
+class ClusterReference
+{
+public:
+    ClusterReference(const std::vector<oracle::OracleObject>& objects, const std::vector<core::ObjectId>& sceneIdOf,
+                     const ExtractedScene& scene, unsigned width, unsigned height)
+        : _sceneIdOf(sceneIdOf), _scene(scene), _triangles(objects, width, height)
+    {
+    }
+
+    void narrow(const BenchView& view, const std::vector<std::uint32_t>& visibleObjects, core::VisibleSet& exact)
+    {
+        const std::vector<std::uint32_t> triangles = _triangles.visible(view.view, view.projection);
+        for (std::uint32_t o : visibleObjects)
+        {
+            const core::ObjectId first = _sceneIdOf.at(o);
+            if (first == core::InvalidObject || !_scene.refs[first].clusters)
+                continue;
+            const ClusterLayout& layout = *_scene.refs[first].clusters;
+            const std::uint32_t begin = _triangles.firstTriangle(o);
+            const std::uint32_t end = begin + std::uint32_t(layout.triangleCount());
+            auto t = std::lower_bound(triangles.begin(), triangles.end(), begin);
+            if (t == triangles.end() || *t >= end)
+            {
+                for (std::size_t c = 0; c < layout.size(); ++c)
+                    exact.set(first + core::ObjectId(c));
+                continue;
+            }
+            exact.clear(first);
+            for (; t != triangles.end() && *t < end; ++t)
+                exact.set(first + layout.clusterOfTriangle()[*t - begin]);
+        }
+    }
+
+private:
+    const std::vector<core::ObjectId>& _sceneIdOf;
+    const ExtractedScene& _scene;
+    oracle::TriangleIdOracle _triangles;
+};
+
 void addPixelCounts(const oracle::IdBufferOracle::Result& result, const std::vector<core::ObjectId>& sceneIdOf,
-                    ViewReference& view)
+                    const ExtractedScene& scene, ViewReference& view)
 {
     for (std::size_t i = 0; i < result.visible.size(); ++i)
         if (result.pixels[i] != 0)
-            view.pixels.push_back({sceneIdOf.at(result.visible[i]), std::uint32_t(result.pixels[i])});
+        {
+            const core::ObjectId id = sceneIdOf.at(result.visible[i]);
+            const ClusterLayout* clusters = id == core::InvalidObject ? nullptr : scene.refs[id].clusters.get();
+            view.pixels.push_back(
+                {id, std::uint32_t(result.pixels[i]), clusters ? std::uint32_t(clusters->size()) : 1u});
+        }
 }
 } // namespace
 
@@ -61,6 +111,10 @@ OracleReference computeOracleReference(osg::Node& root, const ExtractedScene& sc
     settings.supersample = supersample;
     oracle::IdBufferOracle idBuffer(&root, settings);
     const std::vector<core::ObjectId> sceneIdOf = mapOracleObjects(idBuffer.objects(), scene);
+    std::unique_ptr<ClusterReference> clusters;
+    if (scene.clusteredDrawables != 0)
+        clusters = std::make_unique<ClusterReference>(idBuffer.objects(), sceneIdOf, scene, width * supersample,
+                                                      height * supersample);
 
     OracleReference reference;
     reference.supersample = supersample;
@@ -80,7 +134,9 @@ OracleReference computeOracleReference(osg::Node& root, const ExtractedScene& sc
             else
                 viewReference.exact.set(id);
         }
-        addPixelCounts(result, sceneIdOf, viewReference);
+        if (clusters)
+            clusters->narrow(views[v], result.visible, viewReference.exact);
+        addPixelCounts(result, sceneIdOf, scene, viewReference);
         viewReference.inFrustum = objectsInFrustum(scene.scene, views[v].frustum);
         if (result.onlyInSupersampled != 0)
         {
