@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <iterator>
 #include <memory>
 #include <utility>
 
@@ -46,20 +47,32 @@ core::VisibleSet objectsInFrustum(const core::Scene& scene, const core::Frustum&
     return inside;
 }
 // Clusters (docs/clusters.md) are finer than the ID buffer's objects: a clustered drawable the ID
-// buffer sees is narrowed to the clusters that own a triangle in the triangle-ID render (at the
-// supersampled size). One it sees whose triangles the triangle render missed keeps every cluster.
+// buffer sees is narrowed to the clusters that own a triangle in a triangle-ID render at the display
+// size or at the supersampled size, the two sizes the ID buffer renders at (their sample points
+// differ: a sliver one of them catches the other may miss). One the ID buffer sees whose triangles
+// both renders missed keeps every cluster.
 class ClusterReference
 {
 public:
     ClusterReference(const std::vector<oracle::OracleObject>& objects, const std::vector<core::ObjectId>& sceneIdOf,
-                     const ExtractedScene& scene, unsigned width, unsigned height)
+                     const ExtractedScene& scene, unsigned width, unsigned height, unsigned supersample)
         : _sceneIdOf(sceneIdOf), _scene(scene), _triangles(objects, width, height)
     {
+        if (supersample > 1)
+            _supersampled = std::make_unique<oracle::TriangleIdOracle>(objects, width * supersample, height * supersample);
     }
 
     void narrow(const BenchView& view, const std::vector<std::uint32_t>& visibleObjects, core::VisibleSet& exact)
     {
-        const std::vector<std::uint32_t> triangles = _triangles.visible(view.view, view.projection);
+        std::vector<std::uint32_t> triangles = _triangles.visible(view.view, view.projection);
+        if (_supersampled)
+        {
+            const std::vector<std::uint32_t> more = _supersampled->visible(view.view, view.projection);
+            std::vector<std::uint32_t> both;
+            both.reserve(triangles.size() + more.size());
+            std::set_union(triangles.begin(), triangles.end(), more.begin(), more.end(), std::back_inserter(both));
+            triangles.swap(both);
+        }
         for (std::uint32_t o : visibleObjects)
         {
             const core::ObjectId first = _sceneIdOf.at(o);
@@ -85,6 +98,7 @@ private:
     const std::vector<core::ObjectId>& _sceneIdOf;
     const ExtractedScene& _scene;
     oracle::TriangleIdOracle _triangles;
+    std::unique_ptr<oracle::TriangleIdOracle> _supersampled;
 };
 
 void addPixelCounts(const oracle::IdBufferOracle::Result& result, const std::vector<core::ObjectId>& sceneIdOf,
@@ -113,8 +127,7 @@ OracleReference computeOracleReference(osg::Node& root, const ExtractedScene& sc
     const std::vector<core::ObjectId> sceneIdOf = mapOracleObjects(idBuffer.objects(), scene);
     std::unique_ptr<ClusterReference> clusters;
     if (scene.clusteredDrawables != 0)
-        clusters = std::make_unique<ClusterReference>(idBuffer.objects(), sceneIdOf, scene, width * supersample,
-                                                      height * supersample);
+        clusters = std::make_unique<ClusterReference>(idBuffer.objects(), sceneIdOf, scene, width, height, supersample);
 
     OracleReference reference;
     reference.supersample = supersample;
