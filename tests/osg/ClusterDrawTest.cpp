@@ -73,7 +73,7 @@ osg::Matrixd viewAt(unsigned view, unsigned frame)
 struct Result
 {
     std::array<osg::ref_ptr<osg::Image>, 2> images;
-    std::array<double, 2> visible{-1, -1}, objects{-1, -1};
+    std::array<double, 2> visible{-1, -1}, objects{-1, -1}, clusters{-1, -1};
 };
 
 // `cullVisitorModes`: non-empty to cull with osgVis::CullVisitor (installed on both views) instead.
@@ -114,6 +114,7 @@ Result render(osg::Node* scene, osgViewer::ViewerBase::ThreadingModel threading,
         osg::Stats* stats = viewer.getView(v)->getCamera()->getStats();
         stats->getAttribute(last, osgVis::STATS_VISIBLE, result.visible[v]);
         stats->getAttribute(last, osgVis::STATS_OBJECTS, result.objects[v]);
+        stats->getAttribute(last, osgVis::STATS_CLUSTERS, result.clusters[v]);
     }
     return result;
 }
@@ -151,6 +152,7 @@ TEST(ClusterDraw, TwoViewsDrawThePlainGraphsPixelsUnderEveryThreadingModel)
                     ASSERT_TRUE(culled.images[v] && culled.images[v]->data());
                     EXPECT_TRUE(samePixels(*reference.images[v], *culled.images[v])) << "view " << v;
                     EXPECT_GT(culled.visible[v], 0.0) << "view " << v;
+                    EXPECT_EQ(culled.clusters[v], culled.visible[v]) << "view " << v; // every object is a cluster
                 }
                 EXPECT_GE(culled.objects[0], 50.0); // clusters, not one drawable
                 // Not vacuous: the wall hides the row behind it (32 clusters) from the front view's
@@ -217,6 +219,7 @@ TEST(ClusterDraw, DrawableWithUserDrawCallbackStaysWholeAndIsDrawnByIt)
         ASSERT_TRUE(culled.images[v] && culled.images[v]->data());
         EXPECT_TRUE(samePixels(*reference.images[v], *culled.images[v])) << "view " << v;
         EXPECT_EQ(culled.objects[v], 1.0) << "view " << v;
+        EXPECT_EQ(culled.clusters[v], -1.0) << "view " << v; // no clusters: no such statistic
     }
     EXPECT_EQ(callback->calls.load(), 2 * Frames);
 }
