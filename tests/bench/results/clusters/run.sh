@@ -20,6 +20,11 @@ for clusters in off 1024; do
         --modes osg,frustum,octree,mask --clusters "$clusters" --json "$out/city-clusters-$clusters.json" \
         > "$out/city-clusters-$clusters.txt" 2>&1
 done
+for clusters in off on; do
+    bash scripts/with-display.sh "$bin/osgvisbench" --generate office --triangles 500000 --views 100 \
+        --modes osg,frustum,octree,mask --clusters "$clusters" --json "$out/office-clusters-$clusters.json" \
+        > "$out/office-clusters-$clusters.txt" 2>&1
+done
 scene=$(mktemp -d)/forest2m.osgb # generated, never committed
 "$bin/osgvisgen" --kind forest --triangles 2000000 -o "$scene"
 for threshold in 4096 1024; do
