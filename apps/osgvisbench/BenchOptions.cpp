@@ -114,7 +114,7 @@ std::string benchUsage()
            "                    [--volume-face N] [--volume-eyes N] [--volume-repeat N]]\n"
            "                   [--volume-cells N]\n"
            "                   [--json OUT.json] [--report DIR [--pictures N]] [--explain] [--backoff on|off]\n"
-           "                   [--dump-visible DIR]\n"
+           "                   [--dump-visible DIR] [--clusters on|off|N]\n"
            "                   [--help]\n"
            "\n"
            "Renders every mode over the same walk in one process and measures it against the\n"
@@ -192,6 +192,10 @@ std::string benchUsage()
            "  LOD/Switch, dynamic, degenerate, too small, ...), the occluder polygons the object-space\n"
            "  methods get, objects whose bounds span more than half the model, and the objects the\n"
            "  best mode never culled although hidden, largest first, with the likeliest reason.\n"
+           "--clusters on|off|N: split drawables of at least N triangles (on: the default, 4096) into\n"
+           "  clusters culled as objects (docs/clusters.md); off keeps every drawable whole. Sets\n"
+           "  OSGVIS_CLUSTER_THRESHOLD for every extraction of the run. With clusters the oracle's\n"
+           "  objects are narrowed to clusters by a triangle-ID render.\n"
            "--backoff on: measure the modes as an application with do no harm gets them: each\n"
            "  VisibilityGroup times frames with and without its chain and skips the chain where it\n"
            "  costs more than it saves (core::BackOff; timing-dependent, so off by default: each\n"
@@ -259,6 +263,19 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             if (setting != "on" && setting != "off")
                 throw UsageError("--backoff takes on or off, got '" + setting + "'");
             options.backOff = setting == "on";
+        }
+        else if (flag == "--clusters")
+        {
+            const std::string setting = value();
+            std::string threshold = setting;
+            if (setting == "on")
+                threshold = "4096";
+            else if (setting == "off")
+                threshold = "0";
+            else
+                parseUnsigned("--clusters", setting);
+            // note: every extraction of the run (the bench's, each mode's VisibilityGroup) reads it
+            ::setenv("OSGVIS_CLUSTER_THRESHOLD", threshold.c_str(), 1);
         }
         else if (flag == "--explain")
             options.explain = true;

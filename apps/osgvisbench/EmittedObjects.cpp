@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "EmittedObjects.h"
 
+#include <osgVis/ClusterDraw>
+
 #include <osgUtil/StateGraph>
 
 #include <algorithm>
@@ -63,12 +65,36 @@ void EmittedObjects::collectBin(const osgUtil::RenderBin& bin, core::VisibleSet&
 
 void EmittedObjects::collectLeaf(const osgUtil::RenderLeaf& leaf, core::VisibleSet& emitted)
 {
-    const std::vector<core::ObjectId>& candidates = _scene.idsOf(leaf.getDrawable());
+    // A ClusterDraw stands for the clusters it issues to GL; a clustered drawable drawn as it is
+    // stands for all of them (docs/clusters.md).
+    const osg::Drawable* drawable = leaf.getDrawable();
+    const auto* part = dynamic_cast<const ClusterDraw*>(drawable);
+    if (part)
+        drawable = part->original();
+    const std::vector<core::ObjectId>& candidates = _scene.idsOf(drawable);
     if (candidates.empty())
         return;
-    if (candidates.size() == 1 || !leaf._modelview.valid())
+    const auto emit = [&](core::ObjectId id)
     {
-        emitted.set(candidates.front());
+        const ObjectRef& ref = _scene.refs[id];
+        if (!ref.clusters)
+        {
+            emitted.set(id);
+            return;
+        }
+        const core::ObjectId first = id - ref.cluster;
+        if (part)
+            for (std::uint32_t c : part->drawnClusters())
+                emitted.set(first + c);
+        else
+            for (std::size_t c = 0; c < ref.clusters->size(); ++c)
+                emitted.set(first + core::ObjectId(c));
+    };
+    const bool oneInstance = candidates.size() == 1 || (_scene.refs[candidates.front()].clusters &&
+                                                        candidates.size() == _scene.refs[candidates.front()].clusters->size());
+    if (oneInstance || !leaf._modelview.valid())
+    {
+        emit(candidates.front());
         return;
     }
     const osg::Matrixd model = *leaf._modelview * _inverseView;
@@ -77,6 +103,8 @@ void EmittedObjects::collectLeaf(const osgUtil::RenderLeaf& leaf, core::VisibleS
     double nearestDifference = std::numeric_limits<double>::max();
     for (core::ObjectId id : candidates)
     {
+        if (_scene.refs[id].cluster != 0)
+            continue; // one instance's clusters share its matrix
         const double difference = largestDifference(model, _scene.refs[id].world);
         if (difference < nearestDifference)
         {
@@ -85,7 +113,7 @@ void EmittedObjects::collectLeaf(const osgUtil::RenderLeaf& leaf, core::VisibleS
         }
     }
     if (nearestDifference <= tolerance)
-        emitted.set(nearest);
+        emit(nearest);
     else
         ++_unmatchedLeaves;
 }

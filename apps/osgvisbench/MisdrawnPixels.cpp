@@ -7,8 +7,20 @@ std::uint64_t misdrawnPixels(const ViewReference& view, const core::VisibleSet& 
 {
     std::uint64_t pixels = 0;
     for (const ObjectPixels& object : view.pixels)
-        if (object.id == core::InvalidObject || !drawn.test(object.id))
+    {
+        if (object.id == core::InvalidObject)
+        {
             pixels += object.pixels;
+            continue;
+        }
+        // note: a clustered drawable's pixels all count when one of its visible clusters was culled
+        // (an upper bound: the ID buffer does not say which cluster owns which pixel)
+        bool missing = false;
+        for (core::ObjectId id = object.id; id < object.id + object.clusters && !missing; ++id)
+            missing = (object.clusters == 1 || view.exact.test(id)) && !drawn.test(id);
+        if (missing)
+            pixels += object.pixels;
+    }
     return pixels;
 }
 

@@ -4,8 +4,12 @@
 #include "Progress.h"
 
 #include <osgVis/oracle/IdBufferOracle.h>
+#include <osgVis/oracle/TriangleIdOracle.h>
 
+#include <algorithm>
 #include <iostream>
+#include <iterator>
+#include <memory>
 #include <utility>
 
 namespace osgVis::bench
@@ -42,12 +46,72 @@ core::VisibleSet objectsInFrustum(const core::Scene& scene, const core::Frustum&
             inside.set(object.id);
     return inside;
 }
+// Clusters (docs/clusters.md) are finer than the ID buffer's objects: a clustered drawable the ID
+// buffer sees is narrowed to the clusters that own a triangle in a triangle-ID render at the display
+// size or at the supersampled size, the two sizes the ID buffer renders at (their sample points
+// differ: a sliver one of them catches the other may miss). One the ID buffer sees whose triangles
+// both renders missed keeps every cluster.
+class ClusterReference
+{
+public:
+    ClusterReference(const std::vector<oracle::OracleObject>& objects, const std::vector<core::ObjectId>& sceneIdOf,
+                     const ExtractedScene& scene, unsigned width, unsigned height, unsigned supersample)
+        : _sceneIdOf(sceneIdOf), _scene(scene), _triangles(objects, width, height)
+    {
+        if (supersample > 1)
+            _supersampled = std::make_unique<oracle::TriangleIdOracle>(objects, width * supersample, height * supersample);
+    }
+
+    void narrow(const BenchView& view, const std::vector<std::uint32_t>& visibleObjects, core::VisibleSet& exact)
+    {
+        std::vector<std::uint32_t> triangles = _triangles.visible(view.view, view.projection);
+        if (_supersampled)
+        {
+            const std::vector<std::uint32_t> more = _supersampled->visible(view.view, view.projection);
+            std::vector<std::uint32_t> both;
+            both.reserve(triangles.size() + more.size());
+            std::set_union(triangles.begin(), triangles.end(), more.begin(), more.end(), std::back_inserter(both));
+            triangles.swap(both);
+        }
+        for (std::uint32_t o : visibleObjects)
+        {
+            const core::ObjectId first = _sceneIdOf.at(o);
+            if (first == core::InvalidObject || !_scene.refs[first].clusters)
+                continue;
+            const ClusterLayout& layout = *_scene.refs[first].clusters;
+            const std::uint32_t begin = _triangles.firstTriangle(o);
+            const std::uint32_t end = begin + std::uint32_t(layout.triangleCount());
+            auto t = std::lower_bound(triangles.begin(), triangles.end(), begin);
+            if (t == triangles.end() || *t >= end)
+            {
+                for (std::size_t c = 0; c < layout.size(); ++c)
+                    exact.set(first + core::ObjectId(c));
+                continue;
+            }
+            exact.clear(first);
+            for (; t != triangles.end() && *t < end; ++t)
+                exact.set(first + layout.clusterOfTriangle()[*t - begin]);
+        }
+    }
+
+private:
+    const std::vector<core::ObjectId>& _sceneIdOf;
+    const ExtractedScene& _scene;
+    oracle::TriangleIdOracle _triangles;
+    std::unique_ptr<oracle::TriangleIdOracle> _supersampled;
+};
+
 void addPixelCounts(const oracle::IdBufferOracle::Result& result, const std::vector<core::ObjectId>& sceneIdOf,
-                    ViewReference& view)
+                    const ExtractedScene& scene, ViewReference& view)
 {
     for (std::size_t i = 0; i < result.visible.size(); ++i)
         if (result.pixels[i] != 0)
-            view.pixels.push_back({sceneIdOf.at(result.visible[i]), std::uint32_t(result.pixels[i])});
+        {
+            const core::ObjectId id = sceneIdOf.at(result.visible[i]);
+            const ClusterLayout* clusters = id == core::InvalidObject ? nullptr : scene.refs[id].clusters.get();
+            view.pixels.push_back(
+                {id, std::uint32_t(result.pixels[i]), clusters ? std::uint32_t(clusters->size()) : 1u});
+        }
 }
 } // namespace
 
@@ -61,6 +125,9 @@ OracleReference computeOracleReference(osg::Node& root, const ExtractedScene& sc
     settings.supersample = supersample;
     oracle::IdBufferOracle idBuffer(&root, settings);
     const std::vector<core::ObjectId> sceneIdOf = mapOracleObjects(idBuffer.objects(), scene);
+    std::unique_ptr<ClusterReference> clusters;
+    if (scene.clusteredDrawables != 0)
+        clusters = std::make_unique<ClusterReference>(idBuffer.objects(), sceneIdOf, scene, width, height, supersample);
 
     OracleReference reference;
     reference.supersample = supersample;
@@ -80,7 +147,9 @@ OracleReference computeOracleReference(osg::Node& root, const ExtractedScene& sc
             else
                 viewReference.exact.set(id);
         }
-        addPixelCounts(result, sceneIdOf, viewReference);
+        if (clusters)
+            clusters->narrow(views[v], result.visible, viewReference.exact);
+        addPixelCounts(result, sceneIdOf, scene, viewReference);
         viewReference.inFrustum = objectsInFrustum(scene.scene, views[v].frustum);
         if (result.onlyInSupersampled != 0)
         {

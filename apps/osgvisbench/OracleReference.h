@@ -18,6 +18,9 @@ struct ObjectPixels
 {
     core::ObjectId id = core::InvalidObject; // InvalidObject: unknown to the extraction
     std::uint32_t pixels = 0;
+    // A clustered drawable's pixels stand for its clusters [id, id + clusters) (docs/clusters.md):
+    // the ID buffer cannot tell them apart.
+    std::uint32_t clusters = 1;
 };
 
 struct ViewReference

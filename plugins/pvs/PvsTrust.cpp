@@ -33,6 +33,19 @@ std::string mismatchWithModel(const core::PvsFile& pvs, osg::Node& model)
     const std::size_t objects = extracted->scene.objects.size();
     if (fingerprint == baked && objects == pvs.data.objectCount)
         return "";
+    // Clusters (docs/clusters.md) change the objects: say so when the model without them is the one baked.
+    if (extracted->clusteredDrawables != 0)
+    {
+        ExtractionOptions whole = options;
+        whole.clusterThreshold = 0;
+        const osg::ref_ptr<ExtractedScene> unsplit = extractScene(model, whole);
+        const std::uint64_t unsplitFingerprint =
+            geometry ? core::sceneGeometryFingerprint(unsplit->scene) : core::sceneFingerprint(unsplit->scene);
+        if (unsplitFingerprint == baked && unsplit->scene.objects.size() == pvs.data.objectCount)
+            return "baked without clusters (" + std::to_string(pvs.data.objectCount) + " objects; with " +
+                   std::to_string(extracted->clusteredDrawables) + " drawables split into clusters this model has " +
+                   std::to_string(objects) + "): bake it again, or set OSGVIS_CLUSTER_THRESHOLD=0 to read it";
+    }
     const char* kind = geometry ? "geometry fingerprint " : "fingerprint ";
     return std::string("baked for another model (") + kind + hex(baked) + ", " + std::to_string(pvs.data.objectCount) +
            " objects; this model has " + hex(fingerprint) + ", " + std::to_string(objects) + " objects)";

@@ -21,6 +21,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -369,4 +370,40 @@ TEST_F(PvsPlugin, PvsNamingAPvsIsAnError)
     EXPECT_FALSE(result.validNode());
     EXPECT_EQ(result.message(),
               "osgVis: " + path("x.pvs") + " names another .pvs, '" + path("x.pvs") + "', as its model");
+}
+
+// Clusters (docs/clusters.md) change the objects: a .pvs baked without them is reported as such
+// and not used, once a drawable of the model is split.
+TEST_F(PvsPlugin, PvsBakedWithoutClustersIsReportedAsSuchWhenClustersSplitTheModel)
+{
+    osg::ref_ptr<osg::Group> model = makeOffice(1);
+    // One large drawable: a 32 x 32 grid of quads (2048 triangles) low over the floor.
+    const osg::BoundingSphere bound = model->getBound();
+    osg::ref_ptr<osg::Geometry> grid = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> vertices = new osg::Vec3Array;
+    osg::ref_ptr<osg::DrawElementsUInt> triangles = new osg::DrawElementsUInt(GL_TRIANGLES);
+    const float r = 0.5f * bound.radius();
+    for (int j = 0; j <= 32; ++j)
+        for (int i = 0; i <= 32; ++i)
+            vertices->push_back(bound.center() + osg::Vec3(r * (i / 16.f - 1), r * (j / 16.f - 1), 0.0f));
+    for (int j = 0; j < 32; ++j)
+        for (int i = 0; i < 32; ++i)
+            for (int k : {0, 1, 34, 0, 34, 33})
+                triangles->push_back(GLuint(j * 33 + i + k)); // corners (i, j), (i+1, j), (i+1, j+1), (i, j+1)
+    grid->setVertexArray(vertices.get());
+    grid->addPrimitiveSet(triangles.get());
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(grid);
+    model->addChild(geode);
+
+    ::setenv("OSGVIS_CLUSTER_THRESHOLD", "0", 1);
+    const bool written = osgDB::writeNodeFile(*model, path("x.pvs"));
+    ::setenv("OSGVIS_CLUSTER_THRESHOLD", "1000", 1);
+    ASSERT_TRUE(written);
+    readUntrusted(path("x.pvs"), "baked without clusters (");
+    ::unsetenv("OSGVIS_CLUSTER_THRESHOLD");
+    // Without clusters the same file is trusted.
+    const osg::ref_ptr<osgVis::VisibilityGroup> group = readGroup(path("x.pvs"));
+    ASSERT_TRUE(group.valid());
+    EXPECT_EQ(description(*group), "osgVis:pvs-trusted");
 }

@@ -3,6 +3,8 @@
 
 #include <osgVis/core/api/ModuleRegistry.h>
 
+#include "ClusterCulling.h"
+
 #include <osg/Camera>
 #include <osgUtil/RenderStage>
 #include <osgUtil/SceneView>
@@ -127,11 +129,38 @@ void CullVisitor::apply(osg::Drawable& drawable)
         if (_active.visible && !_active.everything)
         {
             const core::ObjectId id = _active.scene->find(&drawable, path);
-            if (id != core::InvalidObject && !_active.visible->test(id))
+            if (id != core::InvalidObject && _active.scene->refs[id].clusters)
+            {
+                if (!clustersVisible(drawable, *_active.scene->refs[id].clusters, id))
+                    return;
+            }
+            else if (id != core::InvalidObject && !_active.visible->test(id))
                 return;
         }
     }
     osgUtil::CullVisitor::apply(drawable);
+}
+
+bool CullVisitor::clustersVisible(osg::Drawable& drawable, const ClusterLayout& layout, core::ObjectId first)
+{
+    std::size_t visibleClusters = 0;
+    visibleRuns(layout, first, *_active.visible, visibleClusters);
+    if (visibleClusters == layout.size())
+        return true; // drawn whole by OSG, callbacks and all
+    if (visibleClusters == 0)
+        return false;
+    // A drawable's own cull callback still decides first, as osgUtil::CullVisitor::apply lets it.
+    if (osg::Callback* callback = drawable.getCullCallback())
+    {
+        if (const osg::DrawableCullCallback* dcb = callback->asDrawableCullCallback())
+        {
+            if (dcb->cull(this, &drawable, &getRenderInfo()))
+                return false;
+        }
+        else
+            callback->run(&drawable, this);
+    }
+    return cullClusters(*this, drawable, layout, first, *_active.visible) == ClusterCull::Whole;
 }
 
 void CullVisitor::installAsPrototype(const std::string& modes)

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "CullingContext.h"
 
+#include "ClusterCulling.h"
+
+#include <osgUtil/CullVisitor>
+
 #include <vector>
 
 namespace osgVis
@@ -24,19 +28,33 @@ ScopedCullingContext::~ScopedCullingContext()
     activeContexts().pop_back();
 }
 
-bool hiddenByActiveContext(const osg::NodeVisitor& visitor, const osg::Drawable& drawable)
+bool hiddenByActiveContext(osg::NodeVisitor& visitor, osg::Drawable& drawable)
 {
     const osg::NodePath& path = visitor.getNodePath();
-    // note: nested VisibilityGroups each hold a context; any one of them may hide the drawable.
+    // note: nested VisibilityGroups each hold a context; any one of them may hide the drawable. Of
+    // clusters, the innermost context that knows them decides (the last on the stack).
+    const CullingContext* clusters = nullptr;
+    core::ObjectId firstCluster = core::InvalidObject;
     for (const CullingContext& context : activeContexts())
     {
         if (context.everything || context.visitor != &visitor || context.rootDepth >= path.size())
             continue;
         const core::ObjectId id = context.scene->find(&drawable, path, context.rootDepth);
-        if (id != core::InvalidObject && !context.visible->test(id))
+        if (id == core::InvalidObject)
+            continue;
+        if (context.scene->refs[id].clusters)
+        {
+            clusters = &context;
+            firstCluster = id;
+        }
+        else if (!context.visible->test(id))
             return true;
     }
-    return false;
+    osgUtil::CullVisitor* cv = visitor.asCullVisitor();
+    if (!clusters || !cv)
+        return false;
+    const ClusterLayout& layout = *clusters->scene->refs[firstCluster].clusters;
+    return cullClusters(*cv, drawable, layout, firstCluster, *clusters->visible) != ClusterCull::Whole;
 }
 
 bool VisibilityCullCallback::cull(osg::NodeVisitor* nv, osg::Drawable* drawable, osg::RenderInfo* renderInfo) const

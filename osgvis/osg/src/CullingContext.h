@@ -33,7 +33,9 @@ public:
 
 // True when an active context of `visitor` on this thread knows the drawable reached through the
 // visitor's current node path and calls it hidden. Without an active context nothing is hidden.
-bool hiddenByActiveContext(const osg::NodeVisitor& visitor, const osg::Drawable& drawable);
+// A clustered drawable (ClusterLayout) with some clusters visible is drawn here, by a ClusterDraw of
+// its visible clusters, when `visitor` is a cull visitor: then too the drawable itself is culled.
+bool hiddenByActiveContext(osg::NodeVisitor& visitor, osg::Drawable& drawable);
 
 // Culls a drawable that an active context calls hidden; otherwise defers to the callback that was
 // installed before it.

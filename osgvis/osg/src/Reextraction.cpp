@@ -74,7 +74,10 @@ osg::ref_ptr<ExtractedScene> reextractScene(osg::Node& root, const ExtractedScen
                                             const ExtractionOptions& options)
 {
     osg::ref_ptr<ExtractedScene> fresh = extractScene(root, options);
-    if (!sameStaticStructure(previous.scene, fresh->scene))
+    // note: clusters are renumbered by a plain extraction (a fallback) rather than matched one by one:
+    // a drawable's layout may change with its geometry.
+    if (!sameStaticStructure(previous.scene, fresh->scene) || previous.clusteredDrawables != 0 ||
+        fresh->clusteredDrawables != 0)
         return fresh;
 
     const core::Scene& before = previous.scene;

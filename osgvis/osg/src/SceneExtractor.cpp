@@ -23,6 +23,7 @@
 #include <osg/TriangleFunctor>
 
 #include <cmath>
+#include <cstdlib>
 #include <typeinfo>
 #include <unordered_map>
 
@@ -329,7 +330,7 @@ private:
 
     void addObject(osg::Drawable& drawable)
     {
-        ObjectRef ref{&drawable, _nodePath, localToRoot()};
+        ObjectRef ref{&drawable, _nodePath, localToRoot(), nullptr, 0};
 
         std::uint32_t flags = core::OBJECT_NONE;
         if (_unpredictableDepth > 0)
@@ -346,6 +347,10 @@ private:
 
         const OccluderEligibility eligibility = occluderEligibility(_nodePath);
         flags |= eligibility.flags;
+
+        if (const ClusterLayout* layout = layoutFor(drawable))
+            if (addClusters(drawable, ref, flags, *layout, eligibility.clockwiseFront))
+                return;
 
         BoundsAccumulator bounds(ref.world);
         const osg::Geometry* geometry = drawable.asGeometry();
@@ -386,6 +391,95 @@ private:
             object.triangleCount = static_cast<std::uint32_t>(_out.scene.triangles.size()) - firstTriangle;
         _out.refs.push_back(std::move(ref));
         _out.indexObject(id);
+    }
+
+    // The drawable's cluster layout (built once per drawable, shared by its instances), or null when it
+    // stays whole.
+    const ClusterLayout* layoutFor(osg::Drawable& drawable)
+    {
+        if (_options.clusterThreshold == 0 || _options.clusterTriangles == 0)
+            return nullptr;
+        const auto found = _layouts.find(&drawable);
+        if (found != _layouts.end())
+            return found->second.get();
+        osg::ref_ptr<ClusterLayout> layout;
+        const osg::Geometry* geometry = drawable.asGeometry();
+        // note: a user's draw callback draws what it likes, and an explicit or computed bound may be
+        // larger than the vertices (shader displacement): such drawables stay one object.
+        if (geometry && !drawable.getDrawCallback() && !drawable.getInitialBound().valid() &&
+            !drawable.getComputeBoundingBoxCallback())
+        {
+            TriangleCollector counter;
+            osg::TriangleFunctor<TriangleCollector> functor;
+            static_cast<TriangleCollector&>(functor) = counter;
+            drawable.accept(functor);
+            const std::uint32_t count = static_cast<const TriangleCollector&>(functor).count;
+            if (count >= _options.clusterThreshold)
+            {
+                layout = ClusterLayout::build(*geometry, _options.clusterTriangles);
+                // note: the clusters must hold exactly the triangles OSG's functor (and the oracle)
+                // sees, or cluster-of-triangle numbering would not match
+                if (layout && layout->triangleCount() != count)
+                    layout = nullptr;
+            }
+        }
+        if (layout)
+            ++_out.clusteredDrawables;
+        return (_layouts[&drawable] = layout).get();
+    }
+
+    // One object per cluster; false (nothing added) when a vertex is not finite in the root frame.
+    bool addClusters(osg::Drawable& drawable, const ObjectRef& ref, std::uint32_t flags, const ClusterLayout& layout,
+                     bool clockwiseFront)
+    {
+        const osg::Array* array = drawable.asGeometry()->getVertexArray();
+        const auto* v3 = dynamic_cast<const osg::Vec3Array*>(array);
+        const auto* v3d = dynamic_cast<const osg::Vec3dArray*>(array);
+        const auto local = [&](GLuint i) { return v3 ? osg::Vec3d((*v3)[i]) : (*v3d)[i]; };
+        const osg::DrawElementsUInt& indices = layout.indices();
+        std::vector<core::Aabb> bounds(layout.size());
+        std::vector<core::Triangle> triangles;
+        if (_options.keepTriangles)
+            triangles.reserve(layout.triangleCount());
+        for (std::size_t c = 0; c < layout.size(); ++c)
+        {
+            const ClusterLayout::Cluster& cluster = layout.clusters()[c];
+            for (std::uint32_t i = cluster.firstIndex; i < cluster.firstIndex + cluster.indexCount; i += 3)
+            {
+                osg::Vec3d w[3];
+                for (int k = 0; k < 3; ++k)
+                {
+                    w[k] = local(indices[i + k]) * ref.world;
+                    if (!finite(w[k]))
+                        return false;
+                    bounds[c].expand(toCore(w[k]));
+                }
+                if (clockwiseFront)
+                    std::swap(w[1], w[2]);
+                if (_options.keepTriangles)
+                    triangles.push_back({core::Vec3f(w[0].x(), w[0].y(), w[0].z()),
+                                         core::Vec3f(w[1].x(), w[1].y(), w[1].z()),
+                                         core::Vec3f(w[2].x(), w[2].y(), w[2].z())});
+            }
+        }
+        const auto firstId = static_cast<core::ObjectId>(_out.scene.objects.size());
+        std::uint32_t firstTriangle = static_cast<std::uint32_t>(_out.scene.triangles.size());
+        _out.scene.triangles.insert(_out.scene.triangles.end(), triangles.begin(), triangles.end());
+        for (std::size_t c = 0; c < layout.size(); ++c)
+        {
+            const std::uint32_t count = layout.clusters()[c].indexCount / 3;
+            const core::ObjectId id = _out.scene.addObject(bounds[c], count, flags, drawable.getName());
+            core::SceneObject& object = _out.scene.objects[id];
+            object.group = firstId;
+            object.firstTriangle = _options.keepTriangles ? firstTriangle : 0;
+            firstTriangle += _options.keepTriangles ? count : 0;
+            ObjectRef clusterRef = ref;
+            clusterRef.clusters = &layout;
+            clusterRef.cluster = std::uint32_t(c);
+            _out.refs.push_back(std::move(clusterRef));
+            _out.indexObject(id);
+        }
+        return true;
     }
 
     core::ConvexPolygon toWorldPolygon(const std::vector<osg::Vec3d>& local, const osg::Matrixd& world) const
@@ -442,9 +536,27 @@ private:
     unsigned _occluderDepth = 0;
     bool _closed = false;
     std::unordered_map<std::string, std::uint32_t> _cellIndex;
+    std::unordered_map<const osg::Drawable*, osg::ref_ptr<ClusterLayout>> _layouts;
     std::vector<std::pair<osg::ref_ptr<const Portal>, osg::Matrixd>> _portals;
 };
 } // namespace
+
+std::uint32_t defaultClusterThreshold()
+{
+    constexpr std::uint32_t Measured = 4096; // docs/clusters.md: how it was chosen
+    const char* setting = std::getenv("OSGVIS_CLUSTER_THRESHOLD");
+    if (!setting || !*setting)
+        return Measured;
+    char* end = nullptr;
+    const unsigned long value = std::strtoul(setting, &end, 10);
+    if (*end != '\0' || value > 0xffffffffu || setting[0] == '-')
+    {
+        OSG_WARN << "osgVis: OSGVIS_CLUSTER_THRESHOLD='" << setting << "' is no triangle count; using " << Measured
+                 << std::endl;
+        return Measured;
+    }
+    return std::uint32_t(value);
+}
 
 const char* whyNotAutomaticOccluder(const osg::NodePath& path)
 {

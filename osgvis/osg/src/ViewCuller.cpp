@@ -246,8 +246,11 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         {
             ++figures.visible;
             figures.trianglesVisible += object.triangleCount;
+            if (object.group != core::InvalidObject)
+                ++figures.clustersVisible;
         }
     }
+    figures.clustered = scene->clusteredDrawables != 0;
     figures.cullMs = std::chrono::duration<double, std::milli>(end - start).count();
     if (frameStamp)
         recordStatistics(camera, frameStamp->getFrameNumber(), figures);

@@ -668,3 +668,45 @@ TEST(OccluderBuilder, OnlyFacesInOnePlaneFacingAlikeUnite)
     EXPECT_EQ(unionCount(0.0f, OBJECT_CULL_BACK, OBJECT_NONE, false), 0u) << "one-sided with two-sided";
     EXPECT_EQ(unionCount(0.0f, OBJECT_NONE, OBJECT_DYNAMIC, false), 0u) << "a moving object is no occluder";
 }
+
+// A wall split into two clusters of one drawable (SceneObject::group): the halves merge as one
+// polygon naming both clusters, while as two plain objects they stay two polygons of one owner each.
+TEST(OccluderBuilder, ClustersOfOneDrawableMergeIntoOnePolygonNamingThemAll)
+{
+    const std::vector<Triangle> wall = tessellatedRectangle(Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(0, 0, 2), 4);
+    const std::size_t half = wall.size() / 2; // cells i = 0, 1: the left half of the wall
+    const std::vector<Triangle> left(wall.begin(), wall.begin() + long(half));
+    const std::vector<Triangle> right(wall.begin() + long(half), wall.end());
+
+    Scene plain;
+    addObject(plain, left);
+    addObject(plain, right);
+    const std::vector<OccluderPolygon> apart = buildOccluderPolygons(plain);
+    ASSERT_EQ(apart.size(), 2u);
+    for (const OccluderPolygon& p : apart)
+    {
+        EXPECT_TRUE(p.parts.empty());
+        EXPECT_NEAR(p.area, 4.0, 1e-9);
+    }
+
+    Scene clustered = plain;
+    clustered.objects[0].group = 0;
+    clustered.objects[1].group = 0;
+    // a third, separate object keeps its own polygon
+    const ObjectId lone = addObject(clustered, tessellatedRectangle(Vec3(0, 5, 0), Vec3(1, 0, 0), Vec3(0, 0, 1), 1));
+    const std::vector<OccluderPolygon> joined = buildOccluderPolygons(clustered);
+    ASSERT_EQ(joined.size(), 2u);
+    EXPECT_NEAR(joined[0].area, 8.0, 1e-9);
+    EXPECT_EQ(joined[0].owner, 0u);
+    EXPECT_EQ(joined[0].parts, (std::vector<ObjectId>{0, 1}));
+    EXPECT_EQ(joined[1].owner, lone);
+    EXPECT_TRUE(joined[1].parts.empty());
+
+    // A polygon lying in one cluster only names no parts: its owner is that cluster.
+    Scene oneSide;
+    addObject(oneSide, left);
+    addObject(oneSide, tessellatedRectangle(Vec3(0, 3, 0), Vec3(0, 2, 0), Vec3(0, 0, 2), 2)); // another plane
+    oneSide.objects[0].group = oneSide.objects[1].group = 0;
+    for (const OccluderPolygon& p : buildOccluderPolygons(oneSide))
+        EXPECT_TRUE(p.parts.empty());
+}

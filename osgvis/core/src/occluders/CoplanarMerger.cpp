@@ -295,7 +295,11 @@ void CoplanarMerger::mergePairwise(const std::vector<int>& region, const Vec3& n
         if (isConvexLoop(piece, _positions, normal, _options.turnTolerance, _options.planeTolerance,
                          _options.maxCorners))
         {
-            out.push_back({piece, normal});
+            std::vector<int> members;
+            for (int member = 0; member < count; ++member)
+                if (rootOf(parent, member) == slot)
+                    members.push_back(region[std::size_t(member)]);
+            out.push_back({piece, normal, faceTags(members)});
             continue;
         }
         // note: tolerances may let a chain of joins drift out of true; its triangles are then
@@ -305,7 +309,7 @@ void CoplanarMerger::mergePairwise(const std::vector<int>& region, const Vec3& n
             if (rootOf(parent, member) == slot)
             {
                 const auto v = faceVertices(region[std::size_t(member)]);
-                out.push_back({{v.begin(), v.end()}, normal});
+                out.push_back({{v.begin(), v.end()}, normal, faceTags({region[std::size_t(member)]})});
             }
         }
     }
@@ -427,7 +431,7 @@ void CoplanarMerger::mergeConnected(std::vector<MergedPolygon>& out)
 
         if (singleOutline(region, seed, loop) && isConvexLoop(loop, _positions, normal, _options.turnTolerance,
                                                               _options.planeTolerance, _options.maxCorners))
-            out.push_back({loop, normal});
+            out.push_back({loop, normal, faceTags(region)});
         else
             mergePairwise(region, normal, out);
     }
@@ -458,8 +462,19 @@ void CoplanarMerger::merge(const std::vector<MergeTriangle>& triangles, std::vec
     for (int t : pending)
     {
         const MergeTriangle& triangle = triangles[std::size_t(t)];
-        out.push_back({{triangle.vertices.begin(), triangle.vertices.end()}, triangle.normal});
+        out.push_back({{triangle.vertices.begin(), triangle.vertices.end()}, triangle.normal, {triangle.tag}});
     }
     _triangles = nullptr;
+}
+
+std::vector<std::uint32_t> CoplanarMerger::faceTags(const std::vector<int>& faces) const
+{
+    std::vector<std::uint32_t> tags;
+    tags.reserve(faces.size() < 4 ? faces.size() : 4);
+    for (int face : faces)
+        tags.push_back((*_triangles)[std::size_t(_triangleOfFace[std::size_t(face)])].tag);
+    std::sort(tags.begin(), tags.end());
+    tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+    return tags;
 }
 } // namespace osgVis::core

@@ -19,12 +19,14 @@ struct MergeTriangle
     std::array<std::uint32_t, 3> vertices; // welded ids, counter-clockwise around `normal`
     Vec3 normal;                           // unit
     double normalSlack = 0.0;              // sine by which float storage may have turned `normal`
+    std::uint32_t tag = 0;                 // caller's label (the object it comes from), kept per polygon
 };
 
 struct MergedPolygon
 {
     std::vector<std::uint32_t> loop; // welded ids along triangle edges, straight-line vertices kept
     Vec3 normal;                     // unit normal of the triangles it came from
+    std::vector<std::uint32_t> tags; // the distinct tags of those triangles, ascending
 };
 
 struct CoplanarMergeOptions
@@ -55,6 +57,8 @@ private:
     bool joinAcross(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b, std::uint32_t from,
                     std::uint32_t to, const Vec3& normal, std::vector<std::uint32_t>& joined) const;
     std::array<std::uint32_t, 3> faceVertices(int face) const;
+    // Tags of the triangles behind mesh faces (or of one triangle), sorted and unique.
+    std::vector<std::uint32_t> faceTags(const std::vector<int>& faces) const;
 
     const std::vector<Vec3>& _positions;
     CoplanarMergeOptions _options;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -155,15 +156,32 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
     VertexWelder welder(extent.min, sceneSize, std::max(options.weldTolerance, 0.0) * sceneSize);
     welder.reserve(eligibleTriangles); // closed meshes have about half as many vertices as triangles
 
+    // note: the clusters of one split drawable (SceneObject::group) merge as one object, so a face
+    // that crosses cluster borders stays one polygon; each polygon names the clusters its triangles
+    // come from (tags), and a module uses it only while all of them are drawn.
     std::vector<ObjectTriangles> objects;
     objects.reserve(sources.size());
+    std::unordered_map<std::uint64_t, std::size_t> entryOfGroup;
     for (ObjectId id : sources)
     {
         const SceneObject& object = scene.objects[id];
         const bool flip = (object.flags & OBJECT_CULL_FRONT) != 0;
-        ObjectTriangles entry{id, (object.flags & (OBJECT_CULL_BACK | OBJECT_CULL_FRONT)) != 0, {}};
+        const bool oneSided = (object.flags & (OBJECT_CULL_BACK | OBJECT_CULL_FRONT)) != 0;
+        std::size_t entryIndex = objects.size();
+        if (object.group != InvalidObject)
+        {
+            const std::uint64_t key = (std::uint64_t(object.group) << 2) |
+                                      ((object.flags & OBJECT_CULL_BACK) ? 1u : 0u) | (flip ? 2u : 0u);
+            const auto [found, inserted] = entryOfGroup.emplace(key, objects.size());
+            entryIndex = found->second;
+            if (inserted)
+                objects.push_back({id, oneSided, {}});
+        }
+        else
+            objects.push_back({id, oneSided, {}});
+        ObjectTriangles& entry = objects[entryIndex];
         const auto [first, end] = scene.trianglesOf(object);
-        entry.triangles.reserve(end - first);
+        entry.triangles.reserve(entry.triangles.size() + (end - first));
         for (std::size_t t = first; t < end; ++t)
         {
             const Triangle& tri = scene.triangles[t];
@@ -174,11 +192,15 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
             std::array<std::uint32_t, 3> ids{welder.weld(a), welder.weld(flip ? c : b), welder.weld(flip ? b : c)};
             MergeTriangle merged;
             if (weldedTriangle(ids, welder.positions(), planeTolerance, merged))
+            {
+                merged.tag = id;
                 entry.triangles.push_back(merged);
+            }
         }
-        if (!entry.triangles.empty())
-            objects.push_back(std::move(entry));
     }
+    objects.erase(std::remove_if(objects.begin(), objects.end(),
+                                 [](const ObjectTriangles& entry) { return entry.triangles.empty(); }),
+                  objects.end());
     std::vector<std::vector<std::uint32_t>> statedLoops;
     for (const ConvexPolygon* polygon : stated)
     {
@@ -218,7 +240,15 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
     for (std::size_t i = 0; i < objects.size(); ++i)
     {
         for (MergedPolygon& polygon : mergedPerObject[i])
-            regions.push_back({std::move(polygon.loop), polygon.normal, objects[i].owner, objects[i].oneSided, {}});
+        {
+            // A polygon of one object (or of one cluster) has no parts; one over several clusters
+            // names them all.
+            const ObjectId owner = polygon.tags.empty() ? objects[i].owner : polygon.tags.front();
+            std::vector<ObjectId> parts;
+            if (polygon.tags.size() > 1)
+                parts.assign(polygon.tags.begin(), polygon.tags.end());
+            regions.push_back({std::move(polygon.loop), polygon.normal, owner, objects[i].oneSided, std::move(parts)});
+        }
     }
     for (std::vector<std::uint32_t>& loop : statedLoops)
     {

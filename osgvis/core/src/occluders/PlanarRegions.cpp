@@ -156,7 +156,14 @@ void unitePlanarRegions(std::vector<OccluderRegion>& regions, VertexWelder& weld
             while (region.loop.size() > 1 && region.loop.front() == region.loop.back())
                 region.loop.pop_back();
             for (std::uint32_t source : piece.sources)
-                region.parts.push_back(regions[inputRegion[source]].owner);
+            {
+                // a source over several clusters of one drawable stands for all of them
+                const OccluderRegion& input = regions[inputRegion[source]];
+                if (input.parts.empty())
+                    region.parts.push_back(input.owner);
+                else
+                    region.parts.insert(region.parts.end(), input.parts.begin(), input.parts.end());
+            }
             std::sort(region.parts.begin(), region.parts.end());
             region.parts.erase(std::unique(region.parts.begin(), region.parts.end()), region.parts.end());
             region.owner = region.parts.front();

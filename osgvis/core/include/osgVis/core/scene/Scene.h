@@ -55,6 +55,11 @@ struct SceneObject
     std::uint32_t firstTriangle = 0; ///< into Scene::triangles; triangleCount entries (may be 0 if not kept)
     std::uint32_t flags = OBJECT_NONE;
     std::string name; ///< for reports and debugging only
+    /// For a cluster of a drawable the renderer split into several objects (docs/clusters.md): a
+    /// label its clusters share (the adapter uses the drawable's first cluster id), so occluder
+    /// polygons are still built over the whole drawable and name the clusters they lie on
+    /// (OccluderPolygon::parts). InvalidObject for an object that is not a cluster.
+    ObjectId group = InvalidObject;
 };
 
 /// A polygon that may hide what lies behind it (world space). `owner` is the object it belongs to,
