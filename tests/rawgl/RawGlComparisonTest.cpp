@@ -84,7 +84,7 @@ void compareRenderers(const std::filesystem::path& model, const std::filesystem:
                       const std::filesystem::path& dir, const std::string& what)
 {
     const AppRun osg =
-        runApp(OSGVIS_BENCH_EXE, "--scene " + quoted(model) + " --walk " + quoted(walk) + " --dump-visible " +
+        runApp(OSGVIS_BENCH_EXE, "--clusters off --scene " + quoted(model) + " --walk " + quoted(walk) + " --dump-visible " +
                                      quoted(dir / "osg") + " --modes " + joined(Modes));
     ASSERT_EQ(osg.exitCode, 0) << osg.output;
     const AppRun raw = runApp(OSGVIS_RAWGL_EXE, quoted(model) + " --walk " + quoted(walk) + " --dump-visible " +
@@ -113,7 +113,7 @@ TEST(RawGl, EngineSameObjectsAndVisibleSetsAsOsgAdapterAndSamePixels)
     const std::filesystem::path dir = scratchDirectory("rawgl", "engine");
     // The automatic walk through the model (as osgvisbench makes it), every fourth view.
     const AppRun walk =
-        runApp(OSGVIS_BENCH_EXE, "--scene " + quoted(model) + " --walk auto --save-walk " + quoted(dir / "auto.walk") +
+        runApp(OSGVIS_BENCH_EXE, "--clusters off --scene " + quoted(model) + " --walk auto --save-walk " + quoted(dir / "auto.walk") +
                                      " --dump-visible " + quoted(dir / "probe") + " --modes frustum");
     ASSERT_EQ(walk.exitCode, 0) << walk.output;
     saveThinnedWalk(dir / "auto.walk", dir / "engine.walk", 4);
