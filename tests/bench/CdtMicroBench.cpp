@@ -6,12 +6,14 @@
 // occluders on a 1024 x 1024 screen scaled to a 2^20 grid. And the whole cdt cull on the test city
 // (tests/core/support/BoxScenes), walking its own kd-tree or the renderer's hierarchy handed over
 // as Scene::hierarchy (visibility API, ordered traversal by callback): the same kd-tree (the sets
-// are identical, tests CdtHierarchy), or a BVH walked under the depth-only rule.
+// are identical, tests CdtHierarchy), or a BVH walked under the depth-only rule; the octree's
+// cull likewise (BM_OctreeCullCity: its own BVH, or the renderer's kd-tree of disjoint cells).
 #include "BoxScenes.h"
 #include "RegionSampling.h"
 
 #include <osgVis/core/cdt/CdtModule.h>
 #include <osgVis/core/cdt/CoverageTriangulation.h>
+#include <osgVis/core/octree/OctreeModule.h>
 #include <osgVis/core/spatial/DisjointCellTree.h>
 
 #include <benchmark/benchmark.h>
@@ -98,7 +100,9 @@ enum class Walked
     RendererKdTree,
 };
 
-void BM_CdtCullCity(benchmark::State& state)
+// One module culling the city on its own tree or on a renderer's kd-tree (visibility API §3.3).
+template <class Module>
+void BM_CullCityOnHierarchy(benchmark::State& state)
 {
     using namespace osgVis::core;
     osgVis::test::City city = osgVis::test::makeCity();
@@ -111,7 +115,7 @@ void BM_CdtCullCity(benchmark::State& state)
         tree->build(bounds, std::vector<bool>(bounds.size(), true), 1);
         city.scene.hierarchy = tree;
     }
-    CdtModule module;
+    Module module;
     module.setScene(city.scene);
     std::vector<View> views;
     for (int i = 0; i < 30; ++i)
@@ -138,7 +142,10 @@ void BM_CdtCullCity(benchmark::State& state)
 }
 } // namespace
 
+void BM_CdtCullCity(benchmark::State& state) { BM_CullCityOnHierarchy<osgVis::core::CdtModule>(state); }
+void BM_OctreeCullCity(benchmark::State& state) { BM_CullCityOnHierarchy<osgVis::core::OctreeModule>(state); }
 BENCHMARK(BM_CdtCullCity)->Arg(int(Walked::OwnTree))->Arg(int(Walked::RendererKdTree))->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OctreeCullCity)->Arg(int(Walked::OwnTree))->Arg(int(Walked::RendererKdTree))->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CdtInsertOccluders)->Arg(64)->Arg(256)->Arg(2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CdtQueries)->Arg(64)->Arg(256)->Arg(2000)->Unit(benchmark::kMicrosecond);
 

@@ -42,16 +42,6 @@ enum class Drawn : std::uint8_t
     Hidden,
 };
 
-/// The traversal's two steps (lambdas sharing the cull's state) as a HierarchyVisitor.
-template <class Enter, class Leave>
-struct CallVisitor : HierarchyVisitor
-{
-    Enter& onEnter;
-    Leave& onLeave;
-    CallVisitor(Enter& e, Leave& l) : onEnter(e), onLeave(l) {}
-    bool enter(const HierarchyNode& node) override { return onEnter(node); }
-    void leave(const HierarchyNode& node) override { onLeave(node); }
-};
 } // namespace
 
 struct CdtModule::Impl
@@ -438,7 +428,7 @@ void CdtModule::cull(const View& view, VisibleSet& visible)
                     drawObject(entry.second, &entered[depth]->region);
         walk.leave();
     };
-    CallVisitor<decltype(enter), decltype(leave)> visitor(enter, leave);
+    LambdaVisitor<decltype(enter), decltype(leave)> visitor(enter, leave);
     m.hierarchy->traverse(view.eye, visitor);
     if (m.stats.traversalStrayed)
         visible = candidates;

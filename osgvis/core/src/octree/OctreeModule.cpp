@@ -5,9 +5,12 @@
 // hidden at once, and only the occluders that partly hide a node passed on to its children.
 // The top of the tree is walked serially; the subtrees below a fixed frontier run in parallel
 // with an affinity partitioner, so a subtree tends to stay on the thread that has its caches.
+// On a renderer's hierarchy (visibility API §3.3) the same tests run in its traversal's order,
+// node by node, on the recorded tight boxes (HierarchyIndex), with one cache per node id.
 #include <osgVis/core/octree/OctreeModule.h>
 
 #include <osgVis/core/occluders/CoplanarUnion.h>
+#include <osgVis/core/spatial/HierarchyIndex.h>
 #include "OccluderShadow.h"
 #include "OcclusionCache.h"
 #include "OcclusionTree.h"
@@ -79,7 +82,13 @@ struct FrontierTask
 
 struct OctreeModule::Impl
 {
-    KdTree tree;
+    KdTree tree; // empty while the scene's hierarchy is walked
+    // The renderer's hierarchy, when usable: the index records its nodes' tight boxes and objects.
+    std::shared_ptr<const TraversalHierarchy> sceneHierarchy;
+    HierarchyIndex index;
+    std::string hierarchyProblem;
+    std::vector<BoxOcclusionCache> hierarchyCaches; // per node id
+    std::uint32_t hierarchyDepth = 0;               // deepest level the last traversal reached
     std::vector<OccluderPolygon> polygons;
     OccluderSelector selector;
     std::vector<BoxOcclusionCache> nodeCaches, objectCaches;
@@ -142,16 +151,37 @@ struct OctreeModule::Impl
     void activateRanked();
     void beginQuery(const OctreeOptions& options, const Vec3& center, const Vec3& halfExtent);
     void traverseAll(const Scene& scene, const OctreeOptions& options, VisibleSet& visible);
+    void traverseHierarchy(const Scene& scene, const OctreeOptions& options);
+    void testObjects(const Scene& scene, const OctreeOptions& options, const std::vector<std::uint32_t>& items,
+                     Range range, unsigned planeMask, const std::vector<std::uint32_t>& partial,
+                     std::vector<std::uint32_t>& objectPartial, std::uint32_t depth, TraversalOutput& out);
+    void applyCulled(const TraversalOutput& out, const std::vector<std::uint32_t>& items, VisibleSet& visible);
+    bool hasObjects() const { return sceneHierarchy ? !index.objects().empty() : !tree.empty(); }
     bool fusedHidden(const Aabb& box, const std::vector<std::uint32_t>& partial, TraversalOutput& out);
 };
 
 void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
 {
-    std::vector<Aabb> boxes;
-    boxes.reserve(scene.objects.size());
-    for (const SceneObject& o : scene.objects)
-        boxes.push_back(o.bounds);
-    tree.build(boxes, options.maxLeafObjects);
+    sceneHierarchy.reset();
+    hierarchyProblem.clear();
+    tree = KdTree();
+    if (options.sceneHierarchy && scene.hierarchy)
+    {
+        index.build(*scene.hierarchy, scene);
+        if (index.usable())
+            sceneHierarchy = scene.hierarchy;
+        hierarchyProblem = index.problem();
+    }
+    hierarchyCaches.assign(sceneHierarchy ? index.objects().empty() ? 0 : sceneHierarchy->nodeCount() : 0,
+                           BoxOcclusionCache());
+    if (!sceneHierarchy)
+    {
+        std::vector<Aabb> boxes;
+        boxes.reserve(scene.objects.size());
+        for (const SceneObject& o : scene.objects)
+            boxes.push_back(o.bounds);
+        tree.build(boxes, options.maxLeafObjects);
+    }
 
     polygons = buildOccluderPolygons(scene, options.occluderBuild);
     collectObjectPoints(scene);
@@ -445,7 +475,7 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
             sweepOrder.push_back({scene.objects[id].bounds.distance(eye), id});
     std::sort(sweepOrder.begin(), sweepOrder.end());
     insertPolygons(statedPolygons, view, options, false);
-    const std::uint32_t debugDepth = debug ? std::uint32_t(treeDepth() + 1) : 0; // below every tree node
+    const std::uint32_t debugDepth = debug ? std::uint32_t(std::max<std::size_t>(treeDepth(), hierarchyDepth) + 1) : 0; // below every tree node
     for (const auto& [distance, id] : sweepOrder)
     {
         const Aabb& bounds = scene.objects[id].bounds;
@@ -583,6 +613,29 @@ Occlusion OctreeModule::Impl::testBox(BoxOcclusionCache& cache, const Aabb& box,
     return partial.empty() ? Occlusion::Visible : Occlusion::Partial;
 }
 
+// The objects items[range] one by one, against the frustum and the occluders that partly hid their node.
+void OctreeModule::Impl::testObjects(const Scene& scene, const OctreeOptions& options,
+                                     const std::vector<std::uint32_t>& items, Range range, unsigned planeMask,
+                                     const std::vector<std::uint32_t>& partial, std::vector<std::uint32_t>& objectPartial,
+                                     std::uint32_t depth, TraversalOutput& out)
+{
+    for (std::uint32_t i = range.first; i < range.first + range.count; ++i)
+    {
+        const Aabb& bounds = scene.objects[items[i]].bounds;
+        unsigned objectMask = planeMask;
+        NodeState state = NodeState::Visible;
+        if (frustum->classify(bounds, objectMask) == Containment::Outside)
+            state = NodeState::OutsideFrustum;
+        else if (!partial.empty() && testBox(objectCaches[items[i]], bounds, partial, options.fuseConnected,
+                                             objectPartial, out) == Occlusion::Invisible)
+            state = NodeState::Invisible;
+        if (state != NodeState::Visible)
+            out.culled.push_back({i, 1});
+        if (debug) // objects show the finest decisions made
+            out.debugNodes.push_back({bounds, state, depth});
+    }
+}
+
 void OctreeModule::Impl::traverse(const Scene& scene, const OctreeOptions& options, std::uint32_t nodeIndex,
                                   std::uint32_t depth, unsigned planeMask, const std::vector<std::uint32_t>& occluders,
                                   TraversalOutput& out, bool stopAtFrontier)
@@ -633,23 +686,8 @@ void OctreeModule::Impl::traverse(const Scene& scene, const OctreeOptions& optio
 
     if (node.leaf())
     {
-        const std::vector<std::uint32_t>& items = tree.items();
-        std::vector<std::uint32_t>& objectPartial = out.list(depth + 1);
-        for (std::uint32_t i = node.firstItem; i < node.firstItem + node.itemCount; ++i)
-        {
-            const Aabb& bounds = scene.objects[items[i]].bounds;
-            unsigned objectMask = planeMask;
-            NodeState state = NodeState::Visible;
-            if (frustum->classify(bounds, objectMask) == Containment::Outside)
-                state = NodeState::OutsideFrustum;
-            else if (!partial.empty() && testBox(objectCaches[items[i]], bounds, partial, options.fuseConnected,
-                                                 objectPartial, out) == Occlusion::Invisible)
-                state = NodeState::Invisible;
-            if (state != NodeState::Visible)
-                out.culled.push_back({i, 1});
-            if (debug) // leaves show their objects, the finest decisions made
-                out.debugNodes.push_back({bounds, state, depth + 1});
-        }
+        testObjects(scene, options, tree.items(), {node.firstItem, node.itemCount}, planeMask, partial,
+                    out.list(depth + 1), depth + 1, out);
         return;
     }
     traverse(scene, options, node.left, depth + 1, planeMask, partial, out, stopAtFrontier);
@@ -692,6 +730,16 @@ OctreeModule::Statistics OctreeModule::lastStatistics() const
     return _impl->statistics;
 }
 
+bool OctreeModule::walksSceneHierarchy() const
+{
+    return _impl->sceneHierarchy != nullptr;
+}
+
+const std::string& OctreeModule::hierarchyProblem() const
+{
+    return _impl->hierarchyProblem;
+}
+
 void OctreeModule::Impl::beginQuery(const OctreeOptions& options, const Vec3& center, const Vec3& halfExtent)
 {
     ++frame;
@@ -706,6 +754,8 @@ void OctreeModule::Impl::beginQuery(const OctreeOptions& options, const Vec3& ce
             cache.clear();
         for (BoxOcclusionCache& cache : objectCaches)
             cache.clear();
+        for (BoxOcclusionCache& cache : hierarchyCaches)
+            cache.clear();
     }
     active.clear();
     shadows.begin(polygons.size());
@@ -714,7 +764,7 @@ void OctreeModule::Impl::beginQuery(const OctreeOptions& options, const Vec3& ce
 void OctreeModule::cull(const View& view, VisibleSet& visible)
 {
     Impl& m = *_impl;
-    if (!_scene || m.tree.empty())
+    if (!_scene || !m.hasObjects())
         return;
     m.beginQuery(_options, view.eye, Vec3(0.0));
     m.frustum = &view.frustum;
@@ -742,7 +792,7 @@ void OctreeModule::cull(const View& view, VisibleSet& visible)
 void OctreeModule::cullRegion(const ViewRegion& region, VisibleSet& visible)
 {
     Impl& m = *_impl;
-    if (!_scene || m.tree.empty())
+    if (!_scene || !m.hasObjects())
         return;
     const Vec3 center = region.center();
     m.beginQuery(_options, center, region.halfExtent());
@@ -770,6 +820,12 @@ void OctreeModule::Impl::traverseAll(const Scene& scene, const OctreeOptions& op
     serial.culled.clear();
     serial.debugNodes.clear();
     serial.statistics = Statistics();
+    if (sceneHierarchy)
+    {
+        traverseHierarchy(scene, options);
+        applyCulled(serial, index.objects(), visible);
+        return;
+    }
     const bool parallel = !frontier.empty() && !debug;
     traverse(scene, options, 0, 0, rootPlaneMask, active, serial, parallel);
     if (parallel)
@@ -791,24 +847,105 @@ void OctreeModule::Impl::traverseAll(const Scene& scene, const OctreeOptions& op
             affinity);
     }
 
-    const std::vector<std::uint32_t>& items = tree.items();
-    const auto apply = [&](const TraversalOutput& out)
-    {
-        for (const Range& r : out.culled)
-            for (std::uint32_t i = r.first; i < r.first + r.count; ++i)
-                if (visible.test(items[i]))
-                    visible.clear(items[i]);
-        const Statistics& s = out.statistics;
-        statistics.nodesVisited += s.nodesVisited;
-        statistics.nodesInvisible += s.nodesInvisible;
-        statistics.nodesOutsideFrustum += s.nodesOutsideFrustum;
-        statistics.planeTests += s.planeTests;
-        statistics.cachedDecisions += s.cachedDecisions;
-    };
-    apply(serial);
+    applyCulled(serial, tree.items(), visible);
     if (parallel)
         for (FrontierTask& task : frontier)
             if (task.active)
-                apply(task.output);
+                applyCulled(task.output, tree.items(), visible);
+}
+
+void OctreeModule::Impl::applyCulled(const TraversalOutput& out, const std::vector<std::uint32_t>& items,
+                                     VisibleSet& visible)
+{
+    for (const Range& r : out.culled)
+        for (std::uint32_t i = r.first; i < r.first + r.count; ++i)
+            if (visible.test(items[i]))
+                visible.clear(items[i]);
+    const Statistics& s = out.statistics;
+    statistics.nodesVisited += s.nodesVisited;
+    statistics.nodesInvisible += s.nodesInvisible;
+    statistics.nodesOutsideFrustum += s.nodesOutsideFrustum;
+    statistics.planeTests += s.planeTests;
+    statistics.cachedDecisions += s.cachedDecisions;
+    statistics.nodesStrayed += s.nodesStrayed;
+}
+
+// The renderer's traversal, with the tests of `traverse` on the recorded nodes. Its order does not
+// matter (each box is tested on its own), so siblings are accepted in any order; a node that
+// differs from the recorded one is kept with everything below it. Ranges index index.objects(),
+// where a node's held objects come first and its subtree's follow.
+void OctreeModule::Impl::traverseHierarchy(const Scene& scene, const OctreeOptions& options)
+{
+    TraversalOutput& out = serial;
+    HierarchyIndex::Walk walk(index, eye, false);
+    const std::vector<ObjectId>& items = index.objects();
+    std::vector<unsigned> planeMasks; // per depth: the plane mask a node passes to its children
+    hierarchyDepth = 0;
+    auto enter = [&](const HierarchyNode& node) -> bool
+    {
+        const HierarchyIndex::Node* found = walk.enter(node);
+        if (!found)
+        {
+            ++out.statistics.nodesStrayed;
+            return false;
+        }
+        const HierarchyIndex::Node& n = *found;
+        const std::uint32_t depth = std::uint32_t(walk.depth() - 1);
+        const auto skip = [&]()
+        {
+            walk.leave();
+            return false;
+        };
+        if (n.contents.empty())
+            return skip();
+        hierarchyDepth = std::max(hierarchyDepth, depth);
+        if (out.lists.size() < depth + 2)
+            out.lists.resize(depth + 2);
+        if (planeMasks.size() < depth + 1)
+            planeMasks.resize(depth + 1);
+        const std::vector<std::uint32_t>& occluders = depth == 0 ? active : out.lists[depth - 1];
+        unsigned planeMask = depth == 0 ? rootPlaneMask : planeMasks[depth - 1];
+        ++out.statistics.nodesVisited;
+        const auto record = [&](const Aabb& box, NodeState state, std::uint32_t at)
+        {
+            if (debug)
+                out.debugNodes.push_back({box, state, at});
+        };
+        const Range subtree{n.firstObject, n.subtreeEnd - n.firstObject};
+        const Containment inFrustum = frustum->classify(n.contents, planeMask);
+        if (inFrustum == Containment::Outside)
+        {
+            ++out.statistics.nodesOutsideFrustum;
+            out.culled.push_back(subtree);
+            record(n.contents, NodeState::OutsideFrustum, depth);
+            return skip();
+        }
+        std::vector<std::uint32_t>& partial = out.lists[depth];
+        if (!occluders.empty() && testBox(hierarchyCaches[node.id], n.contents, occluders, options.fuseConnected,
+                                          partial, out) == Occlusion::Invisible)
+        {
+            ++out.statistics.nodesInvisible;
+            out.culled.push_back(subtree);
+            record(n.contents, NodeState::Invisible, depth);
+            return skip();
+        }
+        if (occluders.empty())
+            partial.clear();
+        if (partial.empty() && inFrustum == Containment::Inside)
+        {
+            record(n.contents, NodeState::Visible, depth); // nothing below can be culled any more
+            return skip();
+        }
+        // lists[depth + 1] is scratch here, before the children use it.
+        testObjects(scene, options, items, {n.firstObject, n.heldCount}, planeMask, partial, out.lists[depth + 1],
+                    depth + 1, out);
+        if (n.subtreeEnd == n.firstObject + n.heldCount)
+            return skip(); // nothing held below
+        planeMasks[depth] = planeMask;
+        return true;
+    };
+    auto leave = [&](const HierarchyNode&) { walk.leave(); };
+    LambdaVisitor<decltype(enter), decltype(leave)> visitor(enter, leave);
+    sceneHierarchy->traverse(eye, visitor);
 }
 } // namespace osgVis::core

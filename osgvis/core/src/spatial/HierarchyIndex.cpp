@@ -175,7 +175,10 @@ void HierarchyIndex::build(const TraversalHierarchy& hierarchy, const Scene& sce
     }
 }
 
-HierarchyIndex::Walk::Walk(const HierarchyIndex& index, const Vec3& eye) : _index(index), _eye(eye) {}
+HierarchyIndex::Walk::Walk(const HierarchyIndex& index, const Vec3& eye, bool ordered)
+    : _index(index), _eye(eye), _ordered(ordered)
+{
+}
 
 const HierarchyIndex::Node* HierarchyIndex::Walk::enter(const HierarchyNode& node)
 {
@@ -190,7 +193,7 @@ const HierarchyIndex::Node* HierarchyIndex::Walk::enter(const HierarchyNode& nod
     {
         // Every later sibling lies behind every earlier one: cover drawn in an earlier one's
         // region hides the later ones without depth (docs/cdt.md).
-        if (_index._layout == HierarchyLayout::Disjoint)
+        if (_ordered && _index._layout == HierarchyLayout::Disjoint)
             for (std::size_t i = _stack.back().enteredBegin; i < _entered.size(); ++i)
                 if (!frontToBack(_index._nodes[_entered[i]].region, n.region, _eye))
                     return nullptr;

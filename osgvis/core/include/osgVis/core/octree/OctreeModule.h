@@ -10,6 +10,9 @@
 /// Modes: "octree" (connected occluders fuse, then an occlusion-tree sweep fuses those that share
 /// no edge), "octree-paper" (the paper's method: no sweep) and "octree-single" (each occluder
 /// tested on its own, the paper's comparison; no sweep).
+/// A renderer's own hierarchy (Scene::hierarchy, visibility API §3.3) is walked instead of the
+/// module's kd-tree when it passes HierarchyIndex's checks: each node is tested by the tight box of
+/// what it holds as recorded, so neither its declared regions nor its order need to be true.
 #include <osgVis/core/octree/BoxOcclusion.h>
 #include <osgVis/core/spatial/KdTree.h>
 #include <osgVis/core/occluders/OccluderBuilder.h>
@@ -17,6 +20,7 @@
 #include <osgVis/core/module/VisibilityModule.h>
 
 #include <memory>
+#include <string>
 
 namespace osgVis::core
 {
@@ -40,6 +44,9 @@ struct OctreeOptions
     std::uint32_t maxLeafObjects = 4;
     std::uint32_t parallelMinObjects = 256; ///< subtrees smaller than this run on the calling thread
     OccluderBuildOptions occluderBuild;
+    /// Walk the scene's TraversalHierarchy (when it has a usable one) instead of building a kd-tree.
+    /// Its traversal runs on the calling thread (a renderer's callback is not split into tasks).
+    bool sceneHierarchy = true;
 };
 
 class OctreeModule : public VisibilityModule
@@ -66,8 +73,13 @@ public:
         std::uint32_t planeTests = 0, cachedDecisions = 0, activeOccluders = 0;
         /// The occlusion-tree sweep: objects it hid, polygons it inserted, nodes of its tree.
         std::uint32_t sweptHidden = 0, sweptOccluders = 0, sweptTreeNodes = 0;
+        /// Nodes of the renderer's traversal that differ from what was recorded: kept, not tested.
+        std::uint32_t nodesStrayed = 0;
     };
     Statistics lastStatistics() const;
+    /// True when the last setScene took the scene's hierarchy; else why not ("" when it had none).
+    bool walksSceneHierarchy() const;
+    const std::string& hierarchyProblem() const;
 
 private:
     struct Impl;

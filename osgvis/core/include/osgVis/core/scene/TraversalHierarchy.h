@@ -48,6 +48,20 @@ public:
     virtual void leave(const HierarchyNode& node) = 0;
 };
 
+/// A visitor made of two callables (a module's lambdas sharing its cull's state).
+template <class Enter, class Leave>
+class LambdaVisitor : public HierarchyVisitor
+{
+public:
+    LambdaVisitor(Enter& onEnter, Leave& onLeave) : _onEnter(onEnter), _onLeave(onLeave) {}
+    bool enter(const HierarchyNode& node) override { return _onEnter(node); }
+    void leave(const HierarchyNode& node) override { _onLeave(node); }
+
+private:
+    Enter& _onEnter;
+    Leave& _onLeave;
+};
+
 class TraversalHierarchy
 {
 public:

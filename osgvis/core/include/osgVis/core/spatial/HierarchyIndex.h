@@ -55,7 +55,9 @@ public:
     class Walk
     {
     public:
-        Walk(const HierarchyIndex& index, const Vec3& eye);
+        /// `ordered` false: a module that needs no front-to-back order (octree: each box is tested
+        /// on its own) accepts siblings in any order.
+        Walk(const HierarchyIndex& index, const Vec3& eye, bool ordered = true);
         const Node* enter(const HierarchyNode& node);
         void leave();
         std::size_t depth() const { return _stack.size(); }
@@ -68,6 +70,7 @@ public:
         };
         const HierarchyIndex& _index;
         Vec3 _eye;
+        bool _ordered;
         std::vector<Level> _stack;
         std::vector<std::uint32_t> _entered;
     };
