@@ -89,6 +89,7 @@ struct OctreeModule::Impl
     std::string hierarchyProblem;
     std::vector<BoxOcclusionCache> hierarchyCaches; // per node id
     std::uint32_t hierarchyDepth = 0;               // deepest level the last traversal reached
+    std::vector<unsigned> hierarchyPlaneMasks;      // per depth: the plane mask a node passes on
     std::vector<OccluderPolygon> polygons;
     OccluderSelector selector;
     std::vector<BoxOcclusionCache> nodeCaches, objectCaches;
@@ -172,8 +173,7 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
             sceneHierarchy = scene.hierarchy;
         hierarchyProblem = index.problem();
     }
-    hierarchyCaches.assign(sceneHierarchy ? index.objects().empty() ? 0 : sceneHierarchy->nodeCount() : 0,
-                           BoxOcclusionCache());
+    hierarchyCaches.assign(sceneHierarchy ? sceneHierarchy->nodeCount() : 0, BoxOcclusionCache());
     if (!sceneHierarchy)
     {
         std::vector<Aabb> boxes;
@@ -475,7 +475,8 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
             sweepOrder.push_back({scene.objects[id].bounds.distance(eye), id});
     std::sort(sweepOrder.begin(), sweepOrder.end());
     insertPolygons(statedPolygons, view, options, false);
-    const std::uint32_t debugDepth = debug ? std::uint32_t(std::max<std::size_t>(treeDepth(), hierarchyDepth) + 1) : 0; // below every tree node
+    // Below every tree node.
+    const std::uint32_t debugDepth = debug ? std::uint32_t(std::max<std::size_t>(treeDepth(), hierarchyDepth) + 1) : 0;
     for (const auto& [distance, id] : sweepOrder)
     {
         const Aabb& bounds = scene.objects[id].bounds;
@@ -879,7 +880,7 @@ void OctreeModule::Impl::traverseHierarchy(const Scene& scene, const OctreeOptio
     TraversalOutput& out = serial;
     HierarchyIndex::Walk walk(index, eye, false);
     const std::vector<ObjectId>& items = index.objects();
-    std::vector<unsigned> planeMasks; // per depth: the plane mask a node passes to its children
+    std::vector<unsigned>& planeMasks = hierarchyPlaneMasks; // kept between culls: no allocation once warm
     hierarchyDepth = 0;
     auto enter = [&](const HierarchyNode& node) -> bool
     {
