@@ -27,8 +27,8 @@ std::string rawUsage()
            "--pixels: also draw every view unculled and compare the frames pixel for pixel; a mode\n"
            "  is conservative unless its name says approx (docs/visapi.md).\n"
            "--hierarchy: hand osgVis this program's own hierarchy, the glTF node instances as boxes\n"
-           "  (overlapping), walked by callback; modes that walk a hierarchy (cdt) walk it instead of\n"
-           "  their own tree, by depth only since the boxes overlap (docs/visapi.md).\n"
+           "  (overlapping), walked by callback; modes that walk a hierarchy (cdt, octree, mask) walk\n"
+           "  it instead of their own tree, cdt by depth only since the boxes overlap (docs/visapi.md).\n"
            "--show: show the frames in a window (default: drawn off-screen in a hidden window).\n"
            "Exit status: 0 ok; 1 the model, the walk or GL failed, or (--pixels) a conservative mode's\n"
            "frame differs from the unculled one; 2 bad command line.\n";

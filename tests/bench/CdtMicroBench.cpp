@@ -7,12 +7,15 @@
 // (tests/core/support/BoxScenes), walking its own kd-tree or the renderer's hierarchy handed over
 // as Scene::hierarchy (visibility API, ordered traversal by callback): the same kd-tree (the sets
 // are identical, tests CdtHierarchy), or a BVH walked under the depth-only rule; the octree's
-// cull likewise (BM_OctreeCullCity: its own BVH, or the renderer's kd-tree of disjoint cells).
+// cull likewise (BM_OctreeCullCity: its own BVH, or the renderer's kd-tree of disjoint cells), and
+// the mask's (BM_MaskCullCity: its own kd-tree or the renderer's; the views lie farther apart
+// than its speed bound allows, so every one is a critical frame: selection, rasterization, marking).
 #include "BoxScenes.h"
 #include "RegionSampling.h"
 
 #include <osgVis/core/cdt/CdtModule.h>
 #include <osgVis/core/cdt/CoverageTriangulation.h>
+#include <osgVis/core/mask/MaskModule.h>
 #include <osgVis/core/octree/OctreeModule.h>
 #include <osgVis/core/spatial/DisjointCellTree.h>
 
@@ -119,8 +122,11 @@ void BM_CullCityOnHierarchy(benchmark::State& state)
     module.setScene(city.scene);
     std::vector<View> views;
     for (int i = 0; i < 30; ++i)
+    {
         views.push_back(osgVis::test::lookFrom({-5.0 + 30.0 * (i % 6), -5.0 + 6.0 * i, 1.7},
                                                {std::sin(0.7 * i), std::cos(0.7 * i), -0.05}, {0, 0, 1}, 60.0, 640, 480));
+        views.back().time = i / 30.0;
+    }
     VisibleSet visible;
     std::size_t kept = 0;
     for (const View& view : views)
@@ -144,8 +150,10 @@ void BM_CullCityOnHierarchy(benchmark::State& state)
 
 void BM_CdtCullCity(benchmark::State& state) { BM_CullCityOnHierarchy<osgVis::core::CdtModule>(state); }
 void BM_OctreeCullCity(benchmark::State& state) { BM_CullCityOnHierarchy<osgVis::core::OctreeModule>(state); }
+void BM_MaskCullCity(benchmark::State& state) { BM_CullCityOnHierarchy<osgVis::core::MaskModule>(state); }
 BENCHMARK(BM_CdtCullCity)->Arg(int(Walked::OwnTree))->Arg(int(Walked::RendererKdTree))->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OctreeCullCity)->Arg(int(Walked::OwnTree))->Arg(int(Walked::RendererKdTree))->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MaskCullCity)->Arg(int(Walked::OwnTree))->Arg(int(Walked::RendererKdTree))->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CdtInsertOccluders)->Arg(64)->Arg(256)->Arg(2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CdtQueries)->Arg(64)->Arg(256)->Arg(2000)->Unit(benchmark::kMicrosecond);
 

@@ -120,12 +120,13 @@ TEST(RawGl, EngineSameObjectsAndVisibleSetsAsOsgAdapterAndSamePixels)
     compareRenderers(model, dir / "engine.walk", dir, "2CylinderEngine");
 
     // The renderer's own hierarchy (glTF node boxes, overlapping) handed over by callback: cdt walks
-    // it by depth only, and its frames still equal the unculled ones.
+    // it by depth only, octree and mask judge its nodes by their recorded boxes, and their frames
+    // still equal the unculled ones.
     const AppRun walked = runApp(OSGVIS_RAWGL_EXE, quoted(model) + " --walk " + quoted(dir / "engine.walk") +
-                                                       " --modes cdt,cdt-depthfree --hierarchy --pixels");
+                                                       " --modes cdt,cdt-depthfree,octree,mask --hierarchy --pixels");
     std::cout << walked.output;
     ASSERT_EQ(walked.exitCode, 0) << walked.output;
-    for (const char* mode : {"cdt", "cdt-depthfree"})
+    for (const char* mode : {"cdt", "cdt-depthfree", "octree", "mask"})
         EXPECT_TRUE(std::regex_search(walked.output, std::regex(std::string("\\n") + mode + " +[0-9]+ .* 0 \\(0\\)\\n")))
             << mode << " on the renderer's hierarchy:\n"
             << walked.output;

@@ -100,22 +100,5 @@ TEST(CdtHierarchy, TraversalOutOfFrontToBackOrderKeepsEveryCandidate)
 
 TEST(CdtHierarchy, UnusableHierarchyIsReplacedByTheModulesOwnTree)
 {
-    City city = makeCity();
-    CdtModule own;
-    own.setScene(city.scene);
-    Scene broken = city.scene;
-    broken.hierarchy = std::make_shared<HoldsTwice>();
-    CdtModule module;
-    module.setScene(broken);
-    EXPECT_FALSE(module.walksSceneHierarchy());
-    EXPECT_EQ(module.hierarchyProblem(), "object 0 is held twice (node 1)");
-    for (const View& view : cityViews(5))
-        EXPECT_EQ(cullAll(module, broken.objects.size(), view).ids(), cullAll(own, city.scene.objects.size(), view).ids());
-
-    CdtOptions ignore;
-    ignore.sceneHierarchy = false;
-    CdtModule ignoring(ignore);
-    city.scene.hierarchy = kdTreeOf(city.scene);
-    ignoring.setScene(city.scene);
-    EXPECT_FALSE(ignoring.walksSceneHierarchy());
+    expectUnusableHierarchyReplaced<CdtModule, CdtOptions>();
 }

@@ -9,6 +9,7 @@
 // World: z up. Most views look along +y from the eye, so eye-space right = +x, up = +z.
 #include "BoxScenes.h"
 #include "RayCastVisibility.h"
+#include "TestHierarchies.h"
 
 #include <osgVis/core/mask/MaskModule.h>
 #include <osgVis/core/api/ModuleRegistry.h>
@@ -735,7 +736,16 @@ TEST(MaskModule, ViewportChangeBetweenFrames)
 // right, eye at (0, -20, 5) looking along +y (the front spans image x within ±0.5 of the depth;
 // open places lie beyond). Changes go either to the scene in place
 // (sceneChanged) or to a copy (sceneReplaced), the copies kept alive as the module may hold any.
-class Dynamic : public testing::TestWithParam<bool>
+// Each test runs with both occluder measures, and on a renderer's kd-tree recorded before the
+// changes (which no longer holds what moved or came in).
+enum class DynamicSetup
+{
+    Coverage,
+    Distance,
+    CoverageOnRendererKdTree,
+};
+
+class Dynamic : public testing::TestWithParam<DynamicSetup>
 {
 protected:
     // A fresh scene and module (each test runs both ways of telling the module about changes).
@@ -751,8 +761,11 @@ protected:
         open = addBox(*scene, {25, 20, 0}, {26, 21, 2}, "open box");
         scenes.push_back(std::move(scene));
         removed.assign(scene_().objects.size(), false);
-        module = makeMode(GetParam() ? "mask" : "mask-distance");
+        if (GetParam() == DynamicSetup::CoverageOnRendererKdTree)
+            scenes.back()->hierarchy = kdTreeOf(scene_());
+        module = makeMode(GetParam() == DynamicSetup::Distance ? "mask-distance" : "mask");
         module->setScene(scene_());
+        EXPECT_EQ(asMask(*module).walksSceneHierarchy(), GetParam() == DynamicSetup::CoverageOnRendererKdTree);
     }
     const Scene& scene_() const { return *scenes.back(); }
     View at(double time, const Vec3& eye = {0, -20, 5}) const { return lookAlongY(eye, time, 160, 120); }
@@ -884,9 +897,15 @@ TEST_P(Dynamic, MovedOccluderNeverOccludesAgain)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(MaskModule, Dynamic, testing::Values(true, false),
-                         [](const testing::TestParamInfo<bool>& info)
-                         { return info.param ? "Coverage" : "Distance"; });
+INSTANTIATE_TEST_SUITE_P(MaskModule, Dynamic,
+                         testing::Values(DynamicSetup::Coverage, DynamicSetup::Distance,
+                                         DynamicSetup::CoverageOnRendererKdTree),
+                         [](const testing::TestParamInfo<DynamicSetup>& info)
+                         {
+                             return info.param == DynamicSetup::Coverage   ? "Coverage"
+                                    : info.param == DynamicSetup::Distance ? "Distance"
+                                                                           : "OnRendererKdTree";
+                         });
 
 // ---- mask-approx ----------------------------------------------------------------------------
 

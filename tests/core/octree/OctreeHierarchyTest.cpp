@@ -17,29 +17,6 @@ using namespace osgVis::test;
 
 namespace
 {
-/// A kd-tree whose root region grows after the first traversal: every later walk strays at once.
-class GrowsAfterFirstWalk : public TraversalHierarchy
-{
-public:
-    explicit GrowsAfterFirstWalk(std::shared_ptr<DisjointCellTree> tree) : _tree(std::move(tree)) {}
-    HierarchyLayout layout() const override { return HierarchyLayout::Disjoint; }
-    std::uint32_t nodeCount() const override { return _tree->nodeCount(); }
-    void traverse(const Vec3& eye, HierarchyVisitor& visitor) const override
-    {
-        if (_walks++ == 0)
-            return _tree->traverse(eye, visitor);
-        const DisjointCellTree::Node& root = _tree->node(0);
-        HierarchyNode node{0, Aabb(root.cell.min - Vec3(1.0), root.cell.max), _tree->objects().data() + root.firstObject,
-                           root.objectCount};
-        if (visitor.enter(node))
-            visitor.leave(node);
-    }
-
-private:
-    std::shared_ptr<DisjointCellTree> _tree;
-    mutable int _walks = 0;
-};
-
 std::size_t culledOver(OctreeModule& module, const Scene& scene, const std::vector<View>& views)
 {
     std::size_t culled = 0;
@@ -134,22 +111,5 @@ TEST(OctreeHierarchy, NodeThatStraysIsKeptWithItsSubtree)
 
 TEST(OctreeHierarchy, UnusableHierarchyIsReplacedByTheModulesOwnTree)
 {
-    City city = makeCity();
-    OctreeModule own;
-    own.setScene(city.scene);
-    Scene broken = city.scene;
-    broken.hierarchy = std::make_shared<HoldsTwice>();
-    OctreeModule module;
-    module.setScene(broken);
-    EXPECT_FALSE(module.walksSceneHierarchy());
-    EXPECT_EQ(module.hierarchyProblem(), "object 0 is held twice (node 1)");
-    for (const View& view : cityViews(5))
-        EXPECT_EQ(cullAll(module, broken.objects.size(), view).ids(), cullAll(own, city.scene.objects.size(), view).ids());
-
-    OctreeOptions ignore;
-    ignore.sceneHierarchy = false;
-    OctreeModule ignoring(ignore);
-    city.scene.hierarchy = kdTreeOf(city.scene);
-    ignoring.setScene(city.scene);
-    EXPECT_FALSE(ignoring.walksSceneHierarchy());
+    expectUnusableHierarchyReplaced<OctreeModule, OctreeOptions>();
 }

@@ -79,6 +79,17 @@ void BackToFront::visit(std::uint32_t i, const Vec3& eye, HierarchyVisitor& visi
     visitor.leave(node);
 }
 
+void GrowsAfterFirstWalk::traverse(const Vec3& eye, HierarchyVisitor& visitor) const
+{
+    if (_walks++ == 0)
+        return _tree->traverse(eye, visitor);
+    const DisjointCellTree::Node& root = _tree->node(0);
+    HierarchyNode node{0, Aabb(root.cell.min - Vec3(1.0), root.cell.max), _tree->objects().data() + root.firstObject,
+                       root.objectCount};
+    if (visitor.enter(node))
+        visitor.leave(node);
+}
+
 void HoldsTwice::traverse(const Vec3&, HierarchyVisitor& visitor) const
 {
     static const ObjectId zero = 0;

@@ -8,6 +8,7 @@
 #include <osgVis/core/mask/MaskRasterizer.h>
 #include <osgVis/core/occluders/OccluderBuilder.h>
 #include <osgVis/core/occluders/OccluderSelector.h>
+#include <osgVis/core/spatial/HierarchyIndex.h>
 
 #include <algorithm>
 #include <chrono>
@@ -115,7 +116,20 @@ void appendObjectPolygons(const Scene& scene, const std::vector<ObjectId>& ids, 
 struct MaskModule::Impl
 {
     const Scene* scene = nullptr;
-    MaskKdTree tree;
+    MaskKdTree tree; // empty while the renderer's hierarchy serves
+    // The renderer's hierarchy when it serves instead of the tree, as recorded at setScene.
+    std::shared_ptr<const TraversalHierarchy> sceneHierarchy;
+    HierarchyIndex index;
+    std::string hierarchyProblem;
+    // Marks on the renderer's hierarchy: index.objects()[first, end) hidden until `until` (a
+    // node's subtree, or one object).
+    struct RangeMark
+    {
+        std::uint32_t first, end;
+        double until;
+    };
+    std::vector<RangeMark> rangeMarks;
+    bool hasObjects() const { return sceneHierarchy ? !index.objects().empty() : !tree.empty(); }
     std::vector<OccluderPolygon> polygons;
     std::vector<std::vector<std::uint32_t>> polygonsOf; // per object (a union of several: each of them)
     std::vector<std::uint32_t> selectedIn;              // per polygon: critical frame that selected it last
@@ -176,6 +190,7 @@ struct MaskModule::Impl
     void forgetMarks()
     {
         tree.clearMarks();
+        rangeMarks.clear();
         alive.clear();
         haveMask = false;
     }
@@ -204,6 +219,16 @@ MaskModule::Statistics MaskModule::lastStatistics() const
 const OcclusionMask& MaskModule::mask() const
 {
     return _impl->mask;
+}
+
+bool MaskModule::walksSceneHierarchy() const
+{
+    return _impl->sceneHierarchy != nullptr;
+}
+
+const std::string& MaskModule::hierarchyProblem() const
+{
+    return _impl->hierarchyProblem;
 }
 
 void MaskModule::setScene(const Scene& scene)
@@ -251,7 +276,18 @@ void MaskModule::setScene(const Scene& scene)
         if (largest > 0.0 && smallest < 0.25 * largest)
             split = MaskKdTree::Split::Planar;
     }
-    m.tree.build(bounds, inTree, split, _options.maxLeafObjects);
+    m.sceneHierarchy.reset();
+    m.hierarchyProblem.clear();
+    m.tree = MaskKdTree();
+    if (_options.sceneHierarchy && scene.hierarchy)
+    {
+        m.index.build(*scene.hierarchy, scene);
+        if (m.index.usable())
+            m.sceneHierarchy = scene.hierarchy;
+        m.hierarchyProblem = m.index.problem();
+    }
+    if (!m.sceneHierarchy)
+        m.tree.build(bounds, inTree, split, _options.maxLeafObjects);
     m.forgetMarks();
     m.statistics = Statistics();
 }
@@ -318,7 +354,8 @@ void MaskModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange
                 break;
             case SceneChange::Kind::Inserted:
                 m.present[id] = 1;
-                if ((object.flags & OBJECT_DYNAMIC) != 0)
+                // The recorded hierarchy's boxes do not hold what comes in later.
+                if ((object.flags & OBJECT_DYNAMIC) != 0 || m.sceneHierarchy)
                 {
                     makeMoving(id);
                     break;
@@ -362,7 +399,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
     Impl& m = *_impl;
     m.statistics = Statistics();
     Statistics& stats = m.statistics;
-    if (!_scene || m.tree.empty())
+    if (!_scene || !m.hasObjects())
         return;
     if (m.debug)
         m.debug->clear();
@@ -439,6 +476,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
         const double nearDepth = std::max(_options.minOccluderDistance, 2.0 * m.projection.nearPlane());
         MaskSelectionInput input;
         input.tree = &m.tree;
+        input.hierarchy = m.sceneHierarchy ? &m.index : nullptr;
         input.objects = &_scene->objects;
         input.usable = &m.usable;
         input.view = &view;
@@ -542,46 +580,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
 
     // Stamped subtrees and objects drop out; moving objects are tested against the mask, which
     // holds for every eye of the current ball.
-    std::uint32_t culled = 0;
-    std::vector<std::uint32_t> stack{m.tree.root()};
-    while (!stack.empty())
-    {
-        const std::uint32_t index = stack.back();
-        stack.pop_back();
-        const MaskKdTree::Node& node = m.tree.node(index);
-        if (node.objectCount == 0)
-            continue;
-        const bool nodeHidden = node.stamp > t;
-        if (!nodeHidden && !node.leaf())
-        {
-            stack.push_back(node.right);
-            stack.push_back(node.left);
-            continue;
-        }
-        if (nodeHidden)
-        {
-            // The whole subtree: collect its leaves.
-            std::vector<std::uint32_t> below{index};
-            while (!below.empty())
-            {
-                const MaskKdTree::Node& n = m.tree.node(below.back());
-                below.pop_back();
-                if (!n.leaf())
-                {
-                    below.push_back(n.left);
-                    below.push_back(n.right);
-                    continue;
-                }
-                for (ObjectId id : n.objects)
-                    if (visible.test(id))
-                        visible.clear(id), ++culled;
-            }
-            continue;
-        }
-        for (ObjectId id : node.objects)
-            if (m.tree.objectStamp(id) > t && visible.test(id))
-                visible.clear(id), ++culled;
-    }
+    std::uint32_t culled = m.sceneHierarchy ? applyHierarchyMarks(t, visible) : applyTreeMarks(t, visible);
     for (ObjectId id : m.movingIds)
     {
         if (!visible.test(id))
@@ -687,58 +686,160 @@ void MaskModule::markHidden(Statistics& stats)
     for (double delta : m.groups.groupDelta)
         outOfViewDelta = std::max(outOfViewDelta, delta);
     const View& view = m.criticalView;
+    // A node whose whole box is decided: out of view for every eye within outOfViewDelta (the
+    // frustum's planes move with the eye, its orientation kept), or behind the mask. Out-of-view
+    // marks do not decide when the next critical frame comes (weight 0). markNode(until) marks it.
+    const auto nodeDecided = [&](const Aabb& box, std::uint32_t objects, auto&& markNode) -> bool
+    {
+        if (view.frustum.classify(box) == Containment::Outside)
+        {
+            if (outsideGrownFrustum(view.frustum, box, outOfViewDelta))
+            {
+                const double until = stampFor(outOfViewDelta);
+                markNode(until);
+                m.stamps.push_back({until, 0u});
+            }
+            return true;
+        }
+        ++stats.nodesTested;
+        double delta = 0.0;
+        if (!objectBehindMask(box, 0, delta))
+            return false;
+        const double until = stampFor(delta);
+        markNode(until);
+        m.stamps.push_back({until, objects});
+        ++stats.nodesMarked;
+        if (m.debug)
+            m.debug->nodes.push_back({box, NodeState::Invisible, 0});
+        return true;
+    };
+    // Below ρ objects (or at a leaf) they are tested one by one.
+    const auto testObject = [&](ObjectId id, auto&& markObject)
+    {
+        double delta = 0.0;
+        if (m.moving[id] || !objectBehindMask(_scene->objects[id].bounds, kObjectSplits, delta))
+            return;
+        const double until = stampFor(delta);
+        markObject(until);
+        m.stamps.push_back({until, 1u});
+        ++stats.objectsMarked;
+    };
+    const auto recordTested = [&](const Aabb& box)
+    {
+        if (m.debug)
+            m.debug->nodes.push_back({box, NodeState::Visible, 0});
+    };
+
+    if (m.sceneHierarchy)
+    {
+        // The renderer's traversal; its order does not matter (each box is judged on its own).
+        HierarchyIndex::Walk walk(m.index, view.eye, false);
+        const std::vector<ObjectId>& objects = m.index.objects();
+        auto enter = [&](const HierarchyNode& node) -> bool
+        {
+            const HierarchyIndex::Node* found = walk.enter(node);
+            if (!found)
+            {
+                ++stats.nodesStrayed; // nothing is marked there: its objects stay as they are
+                return false;
+            }
+            const HierarchyIndex::Node& n = *found;
+            const auto skip = [&]()
+            {
+                walk.leave();
+                return false;
+            };
+            const std::uint32_t count = n.subtreeEnd - n.firstObject;
+            if (count == 0 || nodeDecided(n.contents, count, [&](double until)
+                                          { m.rangeMarks.push_back({n.firstObject, n.subtreeEnd, until}); }))
+                return skip();
+            const bool oneByOne = n.leaf() || count < _options.stopObjects;
+            const std::uint32_t end = oneByOne ? n.subtreeEnd : n.firstObject + n.heldCount;
+            for (std::uint32_t i = n.firstObject; i < end; ++i)
+                testObject(objects[i], [&](double until) { m.rangeMarks.push_back({i, i + 1, until}); });
+            if (!oneByOne)
+                return true;
+            recordTested(n.contents);
+            return skip();
+        };
+        auto leave = [&](const HierarchyNode&) { walk.leave(); };
+        LambdaVisitor<decltype(enter), decltype(leave)> visitor(enter, leave);
+        m.sceneHierarchy->traverse(view.eye, visitor);
+        return;
+    }
+
     std::vector<std::uint32_t> stack{m.tree.root()};
     while (!stack.empty())
     {
         const std::uint32_t index = stack.back();
         stack.pop_back();
         const MaskKdTree::Node& node = m.tree.node(index);
-        if (node.objectCount == 0 || node.bounds.empty())
+        if (node.objectCount == 0 || node.bounds.empty() ||
+            nodeDecided(node.bounds, node.objectCount, [&](double until) { m.tree.markNode(index, until); }))
             continue;
-        // Out of view for every eye within outOfViewDelta (the frustum's planes move with the eye,
-        // its orientation kept): hidden without a look at the mask. Such marks do not decide when
-        // the next critical frame comes (weight 0).
-        if (view.frustum.classify(node.bounds) == Containment::Outside)
-        {
-            if (outsideGrownFrustum(view.frustum, node.bounds, outOfViewDelta))
-            {
-                const double until = stampFor(outOfViewDelta);
-                m.tree.markNode(index, until);
-                m.stamps.push_back({until, 0u});
-            }
-            continue;
-        }
-        ++stats.nodesTested;
-        double delta = 0.0;
-        if (objectBehindMask(node.bounds, 0, delta))
-        {
-            const double until = stampFor(delta);
-            m.tree.markNode(index, until);
-            m.stamps.push_back({until, node.objectCount});
-            ++stats.nodesMarked;
-            if (m.debug)
-                m.debug->nodes.push_back({node.bounds, NodeState::Invisible, 0});
-            continue;
-        }
         if (!node.leaf() && node.objectCount >= _options.stopObjects)
         {
             stack.push_back(node.right);
             stack.push_back(node.left);
             continue;
         }
-        // Below ρ objects: test them one by one.
         m.tree.forEachObjectBelow(index, [&](ObjectId id)
-                                  {
-                                      double delta = 0.0;
-                                      if (!objectBehindMask(_scene->objects[id].bounds, kObjectSplits, delta))
-                                          return;
-                                      const double until = stampFor(delta);
-                                      m.tree.markObject(id, until);
-                                      m.stamps.push_back({until, 1u});
-                                      ++stats.objectsMarked;
-                                  });
-        if (m.debug)
-            m.debug->nodes.push_back({node.bounds, NodeState::Visible, 0});
+                                  { testObject(id, [&](double until) { m.tree.markObject(id, until); }); });
+        recordTested(node.bounds);
     }
+}
+
+std::uint32_t MaskModule::applyTreeMarks(double t, VisibleSet& visible)
+{
+    Impl& m = *_impl;
+    std::uint32_t culled = 0;
+    std::vector<std::uint32_t> stack{m.tree.root()};
+    while (!stack.empty())
+    {
+        const std::uint32_t index = stack.back();
+        stack.pop_back();
+        const MaskKdTree::Node& node = m.tree.node(index);
+        if (node.objectCount == 0)
+            continue;
+        const bool nodeHidden = node.stamp > t;
+        if (!nodeHidden && !node.leaf())
+        {
+            stack.push_back(node.right);
+            stack.push_back(node.left);
+            continue;
+        }
+        if (nodeHidden)
+        {
+            m.tree.forEachObjectBelow(index, [&](ObjectId id)
+                                      {
+                                          if (visible.test(id))
+                                              visible.clear(id), ++culled;
+                                      });
+            continue;
+        }
+        for (ObjectId id : node.objects)
+            if (m.tree.objectStamp(id) > t && visible.test(id))
+                visible.clear(id), ++culled;
+    }
+    return culled;
+}
+
+std::uint32_t MaskModule::applyHierarchyMarks(double t, VisibleSet& visible)
+{
+    Impl& m = *_impl;
+    // Expired marks go; moving objects were judged by boxes they have left and are tested below.
+    m.rangeMarks.erase(std::remove_if(m.rangeMarks.begin(), m.rangeMarks.end(),
+                                      [&](const Impl::RangeMark& mark) { return !(mark.until > t); }),
+                       m.rangeMarks.end());
+    const std::vector<ObjectId>& objects = m.index.objects();
+    std::uint32_t culled = 0;
+    for (const Impl::RangeMark& mark : m.rangeMarks)
+        for (std::uint32_t i = mark.first; i < mark.end; ++i)
+        {
+            const ObjectId id = objects[i];
+            if (!m.moving[id] && visible.test(id))
+                visible.clear(id), ++culled;
+        }
+    return culled;
 }
 } // namespace osgVis::core

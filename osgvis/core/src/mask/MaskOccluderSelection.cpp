@@ -41,14 +41,11 @@ double importance(const MaskSelectionInput& in, const Aabb& box)
         phi = std::min(phi, coverage(*in.projection, box, samples[s]) * box.distance(in.eye + samples[s]));
     return phi;
 }
-} // namespace
-
-std::vector<ObjectId> selectMaskOccluders(const MaskSelectionInput& in)
+// Nearest nodes first (ties by node id), gathering the candidate objects each holds until there are
+// enough; `Tree` says how a node's box, objects and children are read.
+template <class Tree>
+std::vector<std::pair<double, ObjectId>> gatherCandidates(const MaskSelectionInput& in, const Tree& tree)
 {
-    const MaskKdTree& tree = *in.tree;
-    std::vector<ObjectId> chosen;
-    if (tree.empty() || in.count == 0)
-        return chosen;
     // Enough candidates to choose from, without walking the whole city.
     const std::size_t wanted = std::size_t(in.count) * 4;
     struct Entry
@@ -58,30 +55,78 @@ std::vector<ObjectId> selectMaskOccluders(const MaskSelectionInput& in)
         bool operator<(const Entry& o) const { return distance > o.distance || (distance == o.distance && node > o.node); }
     };
     std::priority_queue<Entry> queue;
-    queue.push({tree.node(tree.root()).bounds.distance(in.eye), tree.root()});
+    tree.forEachRoot([&](std::uint32_t node) { queue.push({tree.bounds(node).distance(in.eye), node}); });
     std::vector<std::pair<double, ObjectId>> candidates;
     while (!queue.empty() && candidates.size() < wanted)
     {
         const Entry top = queue.top();
         queue.pop();
-        const MaskKdTree::Node& node = tree.node(top.node);
-        if (node.objectCount == 0 || in.view->frustum.classify(node.bounds) == Containment::Outside)
+        if (tree.objectCount(top.node) == 0 || in.view->frustum.classify(tree.bounds(top.node)) == Containment::Outside)
             continue;
-        if (!node.leaf())
-        {
-            queue.push({tree.node(node.left).bounds.distance(in.eye), node.left});
-            queue.push({tree.node(node.right).bounds.distance(in.eye), node.right});
-            continue;
-        }
-        for (ObjectId id : node.objects)
-        {
-            const Aabb& box = (*in.objects)[id].bounds;
-            if (!(*in.usable)[id] || box.distance(in.eye) < in.minDistance ||
-                in.view->frustum.classify(box) == Containment::Outside)
-                continue;
-            candidates.push_back({importance(in, box), id});
-        }
+        tree.forEachHeld(top.node, [&](ObjectId id)
+                         {
+                             const Aabb& box = (*in.objects)[id].bounds;
+                             if (!(*in.usable)[id] || box.distance(in.eye) < in.minDistance ||
+                                 in.view->frustum.classify(box) == Containment::Outside)
+                                 return;
+                             candidates.push_back({importance(in, box), id});
+                         });
+        tree.forEachChild(top.node, [&](std::uint32_t child) { queue.push({tree.bounds(child).distance(in.eye), child}); });
     }
+    return candidates;
+}
+
+struct KdTreeNodes
+{
+    const MaskKdTree& tree;
+    template <class F> void forEachRoot(F&& f) const { f(tree.root()); }
+    const Aabb& bounds(std::uint32_t n) const { return tree.node(n).bounds; }
+    std::uint32_t objectCount(std::uint32_t n) const { return tree.node(n).objectCount; }
+    template <class F> void forEachHeld(std::uint32_t n, F&& f) const
+    {
+        for (ObjectId id : tree.node(n).objects)
+            f(id);
+    }
+    template <class F> void forEachChild(std::uint32_t n, F&& f) const
+    {
+        if (!tree.node(n).leaf())
+            f(tree.node(n).left), f(tree.node(n).right);
+    }
+};
+
+// The renderer's hierarchy as recorded at setScene (its tight contents boxes).
+struct RecordedNodes
+{
+    const HierarchyIndex& index;
+    template <class F> void forEachRoot(F&& f) const
+    {
+        for (std::uint32_t root : index.roots())
+            f(root);
+    }
+    const Aabb& bounds(std::uint32_t n) const { return index.node(n).contents; }
+    std::uint32_t objectCount(std::uint32_t n) const { return index.node(n).subtreeEnd - index.node(n).firstObject; }
+    template <class F> void forEachHeld(std::uint32_t n, F&& f) const
+    {
+        const HierarchyIndex::Node& node = index.node(n);
+        for (std::uint32_t i = node.firstObject; i < node.firstObject + node.heldCount; ++i)
+            f(index.objects()[i]);
+    }
+    template <class F> void forEachChild(std::uint32_t n, F&& f) const
+    {
+        const HierarchyIndex::Node& node = index.node(n);
+        for (std::uint32_t i = node.firstChild; i < node.firstChild + node.childCount; ++i)
+            f(index.childIds()[i]);
+    }
+};
+} // namespace
+
+std::vector<ObjectId> selectMaskOccluders(const MaskSelectionInput& in)
+{
+    std::vector<ObjectId> chosen;
+    if (in.count == 0 || (in.hierarchy ? in.hierarchy->objects().empty() : (!in.tree || in.tree->empty())))
+        return chosen;
+    std::vector<std::pair<double, ObjectId>> candidates =
+        in.hierarchy ? gatherCandidates(in, RecordedNodes{*in.hierarchy}) : gatherCandidates(in, KdTreeNodes{*in.tree});
     const auto better = [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); };
     const std::size_t keep = std::min<std::size_t>(in.count, candidates.size());
     std::partial_sort(candidates.begin(), candidates.begin() + keep, candidates.end(), better);

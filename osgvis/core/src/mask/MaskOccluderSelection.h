@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Occluder selection of the mask method: a priority queue over kd-tree nodes, nearest first from
-// the eye, gathers candidate occluder objects inside the view; the best R by the chosen measure
+// Occluder selection of the mask method: a priority queue over kd-tree nodes (or the nodes of the
+// renderer's hierarchy as recorded), nearest first from the eye, gathers candidate occluder
+// objects inside the view; the best R by the chosen measure
 // become the critical frame's occluders.
 //
 // Coverage importance (our reading of the paper's φ): φ(ξ) = min over sampled eyes s of
@@ -13,6 +14,7 @@
 
 #include <osgVis/core/mask/MaskKdTree.h>
 #include <osgVis/core/mask/MaskModule.h>
+#include <osgVis/core/spatial/HierarchyIndex.h>
 
 #include <vector>
 
@@ -21,6 +23,7 @@ namespace osgVis::core
 struct MaskSelectionInput
 {
     const MaskKdTree* tree = nullptr;
+    const HierarchyIndex* hierarchy = nullptr; // when set: its recorded nodes instead of `tree`
     const std::vector<SceneObject>* objects = nullptr;
     const std::vector<std::uint8_t>* usable = nullptr; // per object: may be an occluder now
     const View* view = nullptr;

@@ -3,6 +3,7 @@
 // traversal by callback"); docs/visapi.md says what is checked and why each check is needed.
 #include <osgVis/core/spatial/HierarchyIndex.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace osgVis::core
@@ -47,6 +48,7 @@ struct Recorder : HierarchyVisitor
     std::vector<std::uint32_t>& declared;
     std::vector<std::uint32_t>& parents;
     std::vector<std::uint32_t> stack;
+    std::vector<std::uint32_t> order; // node ids as entered
     std::string unusable, notDisjoint;
     bool disjoint;
 
@@ -80,6 +82,7 @@ struct Recorder : HierarchyVisitor
         }
         HierarchyIndex::Node& n = nodes[node.id];
         n.recorded = true;
+        order.push_back(node.id);
         n.region = node.region;
         n.firstObject = std::uint32_t(objects.size());
         declared[node.id] = std::uint32_t(node.objectCount);
@@ -144,22 +147,42 @@ void HierarchyIndex::build(const TraversalHierarchy& hierarchy, const Scene& sce
     Recorder recorder(_nodes.data(), count, scene, _objects, _held, _declared, _parents, declaredDisjoint);
     const Aabb all = scene.bounds();
     hierarchy.traverse(all.empty() ? Vec3(0.0) : all.center(), recorder);
+    // Children grouped by parent, each group in the order the traversal entered them.
+    const std::vector<std::uint32_t>& entered = recorder.order;
+    _childIds.clear();
+    _roots.clear();
+    std::uint32_t offset = 0;
+    for (std::uint32_t id = 0; id < count; ++id)
+    {
+        _nodes[id].firstChild = offset;
+        offset += _nodes[id].childCount;
+    }
+    _childIds.assign(offset, None);
+    std::vector<std::uint32_t> filled(count, 0);
+    for (std::uint32_t id : entered)
+    {
+        const std::uint32_t parent = _parents[id];
+        if (parent == None)
+            _roots.push_back(id);
+        else
+            _childIds[_nodes[parent].firstChild + filled[parent]++] = id;
+    }
     if (declaredDisjoint && recorder.unusable.empty())
     {
         // Siblings of one parent may not overlap.
-        std::vector<std::vector<std::uint32_t>> children(count);
-        for (std::uint32_t id = 0; id < count; ++id)
-            if (_nodes[id].recorded && _parents[id] != None)
-                children[_parents[id]].push_back(id);
         for (std::uint32_t p = 0; p < count && recorder.notDisjoint.empty(); ++p)
-            for (std::size_t i = 0; i < children[p].size(); ++i)
-                for (std::size_t j = i + 1; j < children[p].size(); ++j)
-                    if (overlapInside(_nodes[children[p][i]].region, _nodes[children[p][j]].region))
+        {
+            const std::uint32_t* children = _childIds.data() + _nodes[p].firstChild;
+            for (std::uint32_t i = 0; i < _nodes[p].childCount; ++i)
+                for (std::uint32_t j = i + 1; j < _nodes[p].childCount; ++j)
+                    if (overlapInside(_nodes[children[i]].region, _nodes[children[j]].region))
                     {
                         std::ostringstream why;
-                        why << "sibling nodes " << children[p][i] << " and " << children[p][j] << " overlap";
+                        why << "sibling nodes " << std::min(children[i], children[j]) << " and "
+                            << std::max(children[i], children[j]) << " overlap";
                         recorder.fail(recorder.notDisjoint, why.str());
                     }
+        }
     }
     if (recorder.unusable.empty() && _objects.empty())
         recorder.fail(recorder.unusable, "the hierarchy holds no object the scene could cull");
@@ -171,6 +194,8 @@ void HierarchyIndex::build(const TraversalHierarchy& hierarchy, const Scene& sce
     {
         _nodes.clear();
         _objects.clear();
+        _childIds.clear();
+        _roots.clear();
         _held.assign(scene.objects.size(), false);
     }
 }

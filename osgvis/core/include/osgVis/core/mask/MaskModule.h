@@ -11,6 +11,13 @@
 /// corners). Other frames only read the stamps. Objects may be inserted, moved and deleted
 /// during the walk (sceneChanged / sceneReplaced).
 ///
+/// A renderer's own hierarchy (Scene::hierarchy, visibility API §3.3) replaces the kd-tree: the
+/// critical frame's marking walks the renderer's traversal (any layout: each box is tested on its
+/// own), occluder selection goes nearest first over its nodes as recorded at setScene, and marks are
+/// kept as ranges of the recorded subtrees. Objects inserted or moved afterwards are tested against
+/// the mask every frame (the recorded boxes do not hold them); a traversal that strays from the
+/// recorded one marks nothing where it strays.
+///
 /// Modes: "mask" shrinks each occluder group's projection on its own (conservative for every eye in
 /// the δ-ball); "mask-approx" shrinks the fused union as the paper does (faster, bounded leaks:
 /// approximate); "mask-distance" is "mask" with the plain distance measure for occluder selection.
@@ -52,6 +59,9 @@ struct MaskOptions
     std::uint32_t stopObjects = 8;    ///< ρ: marking stops at nodes with fewer objects and tests them one by one
     enum class Tree { Auto, Planar, Full } tree = Tree::Auto; ///< Auto: Planar for flat (2.5-D) scenes
     std::uint32_t maxLeafObjects = 4;
+    /// Walk the renderer's hierarchy (Scene::hierarchy) when it has one and it passes the checks of
+    /// HierarchyIndex; false: always the module's own kd-tree.
+    bool sceneHierarchy = true;
 };
 
 class MaskModule : public VisibilityModule
@@ -68,6 +78,9 @@ public:
     void setDebugRecord(DebugRecord* record) override;
 
     const MaskOptions& options() const { return _options; }
+    /// True when the last setScene took the scene's hierarchy; else why not ("" when it had none).
+    bool walksSceneHierarchy() const;
+    const std::string& hierarchyProblem() const;
 
     enum class CriticalReason
     {
@@ -88,6 +101,7 @@ public:
         std::size_t coveredPixels = 0;
         std::uint32_t maskWidth = 0, maskHeight = 0;
         std::uint32_t nodesTested = 0, nodesMarked = 0, objectsMarked = 0;
+        std::uint32_t nodesStrayed = 0; ///< renderer's nodes unlike the recorded ones (nothing marked there)
         double delta = 0.0;         ///< least δ of the current marks (world units)
         double validUntil = 0.0;    ///< t_c + δ/V: every mark holds until then
         double criticalAfter = 0.0; ///< when half the hidden objects' stamps have run out
@@ -105,8 +119,11 @@ private:
     /// The least δ of the occluder groups whose rectangles reach the given mask rectangle.
     double tileDeltaOver(double x0, double y0, double x1, double y1) const;
     void fillTileDeltas(double shift);
-    /// The critical frame's marking pass over the kd-tree.
+    /// The critical frame's marking pass over the kd-tree, or over the renderer's traversal.
     void markHidden(Statistics& stats);
+    /// Clears what the marks hide at walk time t; returns how many it cleared.
+    std::uint32_t applyTreeMarks(double t, VisibleSet& visible);
+    std::uint32_t applyHierarchyMarks(double t, VisibleSet& visible);
     struct Impl;
     MaskOptions _options;
     std::unique_ptr<Impl> _impl;

@@ -31,6 +31,7 @@ public:
         Aabb contents; ///< tight box of the subtree's objects (empty: none)
         std::uint32_t firstObject = 0, heldCount = 0, subtreeEnd = 0; ///< into objects(): held, then the rest of the subtree
         std::uint32_t childCount = 0;
+        std::uint32_t firstChild = 0; ///< into childIds(): the node's children in recorded order
         bool recorded = false;
         bool leaf() const { return childCount == 0; }
     };
@@ -44,6 +45,10 @@ public:
     const std::string& problem() const { return _problem; }
     const Node& node(std::uint32_t id) const { return _nodes[id]; }
     const std::vector<ObjectId>& objects() const { return _objects; }
+    /// Children of node n: childIds()[n.firstChild .. n.firstChild + n.childCount).
+    const std::vector<std::uint32_t>& childIds() const { return _childIds; }
+    /// The nodes the traversal entered at the top (usually one root), in recorded order.
+    const std::vector<std::uint32_t>& roots() const { return _roots; }
     /// True when some node holds the object (objects outside the hierarchy stay visible).
     bool holds(ObjectId id) const { return id < _held.size() && _held[id]; }
 
@@ -85,5 +90,7 @@ private:
     std::vector<bool> _held;
     std::vector<std::uint32_t> _declared; ///< per node: the object count the renderer gave
     std::vector<std::uint32_t> _parents;
+    std::vector<std::uint32_t> _childIds;
+    std::vector<std::uint32_t> _roots;
 };
 } // namespace osgVis::core
