@@ -79,13 +79,6 @@ std::vector<View> streetWalk()
     return walk;
 }
 
-std::size_t culledOver(MaskModule& module, const Scene& scene, const std::vector<View>& views)
-{
-    std::size_t culled = 0;
-    for (const View& view : views)
-        culled += scene.objects.size() - cullAll(module, scene.objects.size(), view).count();
-    return culled;
-}
 } // namespace
 
 TEST(MaskHierarchy, RendererTreeBuiltLikeItsOwnGivesExactlyItsSetsAndMarks)

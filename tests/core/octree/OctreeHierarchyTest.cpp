@@ -15,17 +15,6 @@
 using namespace osgVis::core;
 using namespace osgVis::test;
 
-namespace
-{
-std::size_t culledOver(OctreeModule& module, const Scene& scene, const std::vector<View>& views)
-{
-    std::size_t culled = 0;
-    for (const View& view : views)
-        culled += scene.objects.size() - cullAll(module, scene.objects.size(), view).count();
-    return culled;
-}
-} // namespace
-
 TEST(OctreeHierarchy, RendererBvhBuiltLikeItsOwnTreeGivesExactlyItsSets)
 {
     City city = makeCity();

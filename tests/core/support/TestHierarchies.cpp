@@ -118,6 +118,14 @@ VisibleSet cullAll(VisibilityModule& module, std::size_t objects, const View& vi
     return visible;
 }
 
+std::size_t culledOver(VisibilityModule& module, const Scene& scene, const std::vector<View>& views)
+{
+    std::size_t culled = 0;
+    for (const View& view : views)
+        culled += scene.objects.size() - cullAll(module, scene.objects.size(), view).count();
+    return culled;
+}
+
 std::size_t missedByRays(const char* what, VisibilityModule& module, const Scene& scene, const std::vector<View>& views)
 {
     const RayCastVisibility rays(scene);

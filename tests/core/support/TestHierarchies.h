@@ -80,6 +80,9 @@ public:
 /// The module's answer when every object starts visible.
 core::VisibleSet cullAll(core::VisibilityModule& module, std::size_t objects, const core::View& view);
 
+/// Objects the module culls over all the views, each culled from everything visible.
+std::size_t culledOver(core::VisibilityModule& module, const core::Scene& scene, const std::vector<core::View>& views);
+
 /// Objects the ray-cast reference sees that `module` culls on some view (0 expected); prints the
 /// occlusion efficacy (in-frustum objects the rays do not see that the module culls).
 std::size_t missedByRays(const char* what, core::VisibilityModule& module, const core::Scene& scene,
