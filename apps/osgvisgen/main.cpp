@@ -4,11 +4,14 @@
 #include "GltfExport.h"
 
 #include <osgVis/gen/Generator.h>
+#include <osgVis/gen/PagedScene.h>
 #include <osgVis/gen/SceneStats.h>
 
 #include <osgDB/WriteFile>
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -20,6 +23,7 @@ namespace
 {
 const char* usage =
     "usage: osgvisgen --kind office|city|tetra|floor|forest [--layout L] [--triangles N] [--seed S] -o SCENE\n"
+    "       osgvisgen --kind K [...] --paged DIR [--tiles N] [--page-range M] [-o SCENE]\n"
     "       osgvisgen --adversarial NAME -o SCENE\n"
     "       osgvisgen --list | --help\n"
     "\n"
@@ -40,6 +44,15 @@ const char* usage =
     "                    of floor and forest changes; the scene lands within 10%\n"
     "  --seed S          random seed, 0 to 4294967295 (default 1); the same seed gives the same bytes\n"
     "  --adversarial NAME  one of the small adversarial scenes instead (see --list)\n"
+    "  --paged DIR       also (or, without -o, only) write the scene as a paged database: DIR/root.osgb\n"
+    "                    holds one osg::PagedLOD per tile stating the tile's bounding sphere, each tile\n"
+    "                    is DIR/tile_NNNN.osgb (its drawables, whole, under their matrices), and the walk\n"
+    "                    is DIR/root.walk; DIR is created if missing; stock osgviewer DIR/root.osgb\n"
+    "                    pages it with OSG's DatabasePager\n"
+    "  --tiles N         at most N grid cells over the scene's two widest axes, 1 to 65536 (default 256;\n"
+    "                    empty cells write no tile)\n"
+    "  --page-range M    a tile loads while the eye is within M of its centre (default: any distance,\n"
+    "                    so every tile in the frustum loads)\n"
     "  -o, --output SCENE  output path (required)\n"
     "  --list            list the scene kinds and adversarial scenes\n"
     "  --help            this text\n"
@@ -88,6 +101,8 @@ struct Options
     std::optional<std::uint64_t> triangles; // default per kind
     std::uint32_t seed = 1;
     std::string output;
+    std::optional<std::string> paged; // directory of a paged database
+    osgVis::gen::PagedOptions pagedOptions;
     bool list = false;
     bool help = false;
 };
@@ -120,6 +135,19 @@ Options parse(int argc, char** argv)
             o.seed = std::uint32_t(parseUnsigned(arg, value(), 0, 4294967295u));
         else if (arg == "-o" || arg == "--output")
             o.output = value();
+        else if (arg == "--paged")
+            o.paged = value();
+        else if (arg == "--tiles")
+            o.pagedOptions.tiles = unsigned(parseUnsigned(arg, value(), 1, 65536));
+        else if (arg == "--page-range")
+        {
+            const std::string text = value();
+            char* end = nullptr;
+            const double range = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || !(range > 0.0) || !std::isfinite(range))
+                throw UsageError("--page-range needs a positive distance, got '" + text + "'");
+            o.pagedOptions.range = range;
+        }
         else
             throw UsageError("unknown argument '" + arg + "'");
     }
@@ -129,8 +157,10 @@ Options parse(int argc, char** argv)
         throw UsageError("give either --kind or --adversarial, not both");
     if (!o.kind && !o.adversarial)
         throw UsageError("missing --kind (or --adversarial)");
-    if (o.output.empty())
-        throw UsageError("missing output path (-o SCENE)");
+    if (o.output.empty() && !o.paged)
+        throw UsageError("missing output path (-o SCENE or --paged DIR)");
+    if (o.paged && o.adversarial)
+        throw UsageError("--paged goes with --kind only");
     if (o.layout && (!o.kind || *o.kind != "forest"))
         throw UsageError("--layout goes with --kind forest only");
     return o;
@@ -183,6 +213,21 @@ int run(const Options& o)
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+    const gen::SceneStats stats = gen::sceneStats(*scene.root);
+    if (o.paged)
+    {
+        std::filesystem::create_directories(*o.paged);
+        const gen::PagedSummary paged = gen::writePagedScene(*scene.root, *o.paged, o.pagedOptions);
+        const std::string walkPath = walkPathFor(paged.rootPath);
+        scene.walk.save(walkPath);
+        std::printf("%s: %zu objects, %llu triangles in %zu tiles (%zu drawables, %.1f MB) -> %s (walk %s)\n",
+                    what.c_str(), stats.objects, (unsigned long long)stats.triangles, paged.tiles, paged.drawables,
+                    paged.bytes / 1e6,
+                    paged.rootPath.c_str(), walkPath.c_str());
+        if (o.output.empty())
+            return 0;
+    }
+
     std::string gltfError;
     if (isGltfPath(o.output))
     {
@@ -201,7 +246,6 @@ int run(const Options& o)
     const std::string walkPath = walkPathFor(o.output);
     scene.walk.save(walkPath);
 
-    const gen::SceneStats stats = gen::sceneStats(*scene.root);
     std::printf("%s: %zu objects, %llu triangles, %zu walk views, generated in %.2f s -> %s (walk %s)\n", what.c_str(),
                 stats.objects, (unsigned long long)stats.triangles, scene.walk.keys.size(), seconds, o.output.c_str(),
                 walkPath.c_str());

@@ -6,6 +6,7 @@
 #include <osgVis/core/scene/Walk.h>
 #include <osgVis/gen/SceneStats.h>
 
+#include <osg/PagedLOD>
 #include <osgDB/ReadFile>
 
 #include <gtest/gtest.h>
@@ -64,6 +65,10 @@ TEST(GenApp, RejectsBadArgumentsWithAClearMessage)
     expectFailure("--kind forest --layout jungle -o " + out, "unknown forest layout 'jungle'");
     expectFailure("--kind forest --triangles 23999 -o " + out, "outside [24000");
     expectFailure("--kind tetra --triangles 1000 -o /nonexistent-dir/deeper/x.osgb", "cannot write");
+    expectFailure("--kind city --paged " + out + " --tiles 0", "--tiles 0 is out of range");
+    expectFailure("--kind city --paged " + out + " --page-range -3", "--page-range needs a positive distance");
+    expectFailure("--adversarial ortho --paged " + out, "--paged goes with --kind only");
+    expectFailure("--kind city --paged /proc/no-such/dir", "osgvisgen: ");
     expectFailure("--kind tetra --triangles 1000 -o " + (scratchDir() / "x.unknownextension").string(), "cannot write");
 }
 
@@ -71,7 +76,8 @@ TEST(GenApp, HelpAndListTellTheTruth)
 {
     const AppRun help = osgvisgen("--help");
     EXPECT_EQ(help.exitCode, 0);
-    for (const char* option : {"--kind", "--layout", "--triangles", "--seed", "--adversarial", "-o", "--list"})
+    for (const char* option :
+         {"--kind", "--layout", "--triangles", "--seed", "--adversarial", "-o", "--list", "--paged", "--tiles", "--page-range"})
         EXPECT_NE(help.output.find(option), std::string::npos) << option;
     const AppRun list = osgvisgen("--list");
     EXPECT_EQ(list.exitCode, 0);
@@ -103,6 +109,53 @@ TEST(GenApp, WritesTheSceneAndItsWalkAndSaysSo)
     ASSERT_EQ(adversarial.exitCode, 0) << adversarial.output;
     EXPECT_TRUE(std::filesystem::exists(dir / "slit.walk"));
     std::filesystem::remove_all(dir);
+}
+
+TEST(GenApp, PagedDatabaseLoadsTileByTileAsStockOsgDoes)
+{
+    const auto dir = scratchDir() / "paged";
+    const AppRun run = osgvisgen("--kind city --triangles 20000 --tiles 24 --page-range 500 --paged " + dir.string());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find((dir / "root.osgb").string()), std::string::npos) << run.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "root.walk"));
+    EXPECT_FALSE(std::filesystem::exists(scratchDir() / "paged.osgb")); // no -o: the paged files only
+
+    // Read as osgviewer reads it: the tiles' directory comes from the root file's own path.
+    osg::ref_ptr<osg::Node> root = osgDB::readRefNodeFile((dir / "root.osgb").string());
+    ASSERT_TRUE(root.valid());
+    osg::Group* group = root->asGroup();
+    ASSERT_TRUE(group);
+    EXPECT_GE(group->getNumChildren(), 12u);
+    EXPECT_LE(group->getNumChildren(), 24u);
+    std::uint64_t triangles = 0;
+    std::size_t objects = 0;
+    for (unsigned i = 0; i < group->getNumChildren(); ++i)
+    {
+        auto* paged = dynamic_cast<osg::PagedLOD*>(group->getChild(i));
+        ASSERT_TRUE(paged) << i;
+        EXPECT_EQ(paged->getNumChildren(), 0u);
+        EXPECT_EQ(paged->getCenterMode(), osg::LOD::USER_DEFINED_CENTER);
+        EXPECT_GT(paged->getRadius(), 0.0f);
+        EXPECT_EQ(paged->getMaxRange(0), 500.0f);
+        osg::ref_ptr<osg::Node> tile = osgDB::readRefNodeFile(paged->getDatabasePath() + paged->getFileName(0));
+        ASSERT_TRUE(tile.valid()) << paged->getDatabasePath() << paged->getFileName(0);
+        // Every tile lies within the sphere its PagedLOD states.
+        const osg::BoundingSphere stated(paged->getCenter(), paged->getRadius());
+        const osg::BoundingSphere actual = tile->getBound();
+        EXPECT_LE((actual.center() - stated.center()).length() + actual.radius(), stated.radius() * 1.8f) << i;
+        const osgVis::gen::SceneStats stats = osgVis::gen::sceneStats(*tile);
+        triangles += stats.triangles;
+        objects += stats.objects;
+    }
+    // Every drawable instance of the scene is in exactly one tile.
+    const AppRun whole = osgvisgen("--kind city --triangles 20000 -o " + (scratchDir() / "whole.osgb").string());
+    ASSERT_EQ(whole.exitCode, 0) << whole.output;
+    osg::ref_ptr<osg::Node> unpaged = osgDB::readRefNodeFile((scratchDir() / "whole.osgb").string());
+    ASSERT_TRUE(unpaged.valid());
+    const osgVis::gen::SceneStats expected = osgVis::gen::sceneStats(*unpaged);
+    EXPECT_EQ(triangles, expected.triangles);
+    EXPECT_EQ(objects, expected.objects);
+    std::filesystem::remove_all(scratchDir());
 }
 
 TEST(GenApp, FloorDefaultsToThreeHundredThousandTriangles)

@@ -6,6 +6,8 @@
 #include "ClusterCulling.h"
 
 #include <osg/Camera>
+#include <osg/PagedLOD>
+#include <osg/ProxyNode>
 #include <osgUtil/RenderStage>
 #include <osgUtil/SceneView>
 #include <osgViewer/Renderer>
@@ -139,6 +141,31 @@ void CullVisitor::apply(osg::Drawable& drawable)
         }
     }
     osgUtil::CullVisitor::apply(drawable);
+}
+
+bool CullVisitor::pagedNodeHidden(osg::Group& node)
+{
+    const osg::NodePath& path = getNodePath();
+    if (path.empty())
+        return false;
+    if (path.front() != _activeRoot)
+        activate(*path.front());
+    if (!_active.visible || _active.everything)
+        return false;
+    const core::ObjectId id = _active.scene->find(&node, path);
+    return id != core::InvalidObject && !_active.visible->test(id);
+}
+
+void CullVisitor::apply(osg::PagedLOD& node)
+{
+    if (!pagedNodeHidden(node))
+        osgUtil::CullVisitor::apply(node);
+}
+
+void CullVisitor::apply(osg::ProxyNode& node)
+{
+    if (!pagedNodeHidden(node))
+        osgUtil::CullVisitor::apply(node);
 }
 
 bool CullVisitor::clustersVisible(osg::Drawable& drawable, const ClusterLayout& layout, core::ObjectId first)

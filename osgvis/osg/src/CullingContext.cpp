@@ -2,6 +2,7 @@
 #include "CullingContext.h"
 
 #include "ClusterCulling.h"
+#include "PagedNodeCulling.h"
 
 #include <osgUtil/CullVisitor>
 
@@ -55,6 +56,20 @@ bool hiddenByActiveContext(osg::NodeVisitor& visitor, osg::Drawable& drawable)
         return false;
     const ClusterLayout& layout = *clusters->scene->refs[firstCluster].clusters;
     return cullClusters(*cv, drawable, layout, firstCluster, *clusters->visible) != ClusterCull::Whole;
+}
+
+bool placeholderHiddenByActiveContext(osg::NodeVisitor& visitor, const osg::Node& node)
+{
+    const osg::NodePath& path = visitor.getNodePath();
+    for (const CullingContext& context : activeContexts())
+    {
+        if (context.everything || context.visitor != &visitor || context.rootDepth >= path.size())
+            continue;
+        const core::ObjectId id = context.scene->find(&node, path, context.rootDepth);
+        if (id != core::InvalidObject && !context.visible->test(id))
+            return true;
+    }
+    return false;
 }
 
 bool VisibilityCullCallback::cull(osg::NodeVisitor* nv, osg::Drawable* drawable, osg::RenderInfo* renderInfo) const

@@ -2,6 +2,8 @@
 // reextractScene: a fresh extraction renumbered onto the ids of the previous one.
 #include <osgVis/SceneExtractor>
 
+#include "Extraction.h"
+
 #include <algorithm>
 
 namespace osgVis
@@ -73,7 +75,8 @@ void addChange(std::vector<core::SceneChange>& changes, core::SceneChange::Kind 
 osg::ref_ptr<ExtractedScene> reextractScene(osg::Node& root, const ExtractedScene& previous,
                                             const ExtractionOptions& options)
 {
-    osg::ref_ptr<ExtractedScene> fresh = extractScene(root, options);
+    osg::ref_ptr<ExtractedScene> fresh = extractSceneQuietly(root, options);
+    warnOversizedTiles(*fresh, &previous);
     // note: clusters are renumbered by a plain extraction (a fallback) rather than matched one by one:
     // a drawable's layout may change with its geometry.
     if (!sameStaticStructure(previous.scene, fresh->scene) || previous.clusteredDrawables != 0 ||
@@ -97,7 +100,7 @@ osg::ref_ptr<ExtractedScene> reextractScene(osg::Node& root, const ExtractedScen
     for (core::ObjectId id = 0; id < fresh->scene.objects.size(); ++id)
     {
         const ObjectRef& ref = fresh->refs[id];
-        core::ObjectId stable = previous.find(ref.drawable.get(), ref.path);
+        core::ObjectId stable = previous.find(ref.node(), ref.path);
         if (stable == core::InvalidObject || kept[stable])
         {
             stable = static_cast<core::ObjectId>(out->scene.objects.size());
@@ -132,6 +135,10 @@ osg::ref_ptr<ExtractedScene> reextractScene(osg::Node& root, const ExtractedScen
     for (core::OccluderCandidate& occluder : out->scene.occluders)
         if (occluder.owner != core::InvalidObject)
             occluder.owner = stableId[occluder.owner];
+
+    out->oversizedTiles = std::move(fresh->oversizedTiles);
+    for (const PagedNodeRecord& record : fresh->pagedNodes)
+        out->pagedNodes.push_back({stableId[record.placeholder], record.children});
 
     out->childRanges.reserve(fresh->childRanges.size());
     for (const ChildRange& range : fresh->childRanges)

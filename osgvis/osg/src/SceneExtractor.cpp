@@ -7,6 +7,7 @@
 #include <osgVis/VisibilityGroup>
 
 #include "CullingContext.h"
+#include "Extraction.h"
 #include "OccluderEligibility.h"
 
 #include <osg/AutoTransform>
@@ -19,9 +20,12 @@
 #include <osg/Notify>
 #include <osg/PositionAttitudeTransform>
 #include <osg/PrimitiveSet>
+#include <osg/PagedLOD>
 #include <osg/Projection>
+#include <osg/ProxyNode>
 #include <osg/TriangleFunctor>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <typeinfo>
@@ -31,10 +35,10 @@ namespace osgVis
 {
 ExtractedScene::~ExtractedScene() = default;
 
-core::ObjectId ExtractedScene::find(const osg::Drawable* d, const osg::NodePath& path, std::size_t pathBegin) const
+core::ObjectId ExtractedScene::find(const osg::Node* d, const osg::NodePath& path, std::size_t pathBegin) const
 {
-    const auto found = _idsByDrawable.find(d);
-    if (found == _idsByDrawable.end() || pathBegin > path.size())
+    const auto found = _idsByNode.find(d);
+    if (found == _idsByNode.end() || pathBegin > path.size())
         return core::InvalidObject;
     const std::size_t length = path.size() - pathBegin;
     for (core::ObjectId id : found->second)
@@ -46,18 +50,26 @@ core::ObjectId ExtractedScene::find(const osg::Drawable* d, const osg::NodePath&
     return core::InvalidObject;
 }
 
-const std::vector<core::ObjectId>& ExtractedScene::idsOf(const osg::Drawable* d) const
+const std::vector<core::ObjectId>& ExtractedScene::idsOf(const osg::Node* d) const
 {
     static const std::vector<core::ObjectId> none;
-    const auto found = _idsByDrawable.find(d);
-    return found == _idsByDrawable.end() ? none : found->second;
+    const auto found = _idsByNode.find(d);
+    return found == _idsByNode.end() ? none : found->second;
 }
 
 void ExtractedScene::indexObject(core::ObjectId id)
 {
     if (removed(id))
         return;
-    _idsByDrawable[refs[id].drawable.get()].push_back(id);
+    _idsByNode[refs[id].node()].push_back(id);
+}
+
+bool ExtractedScene::pagedNodesChanged() const
+{
+    for (const PagedNodeRecord& record : pagedNodes)
+        if (refs[record.placeholder].paged->getNumChildren() != record.children)
+            return true;
+    return false;
 }
 
 namespace
@@ -263,6 +275,20 @@ public:
     void apply(osg::Camera& node) override { visit(node, &node != _root); }
     void apply(osg::AutoTransform& node) override { visit(node, true); }
     void apply(osg::Transform& node) override { visit(node, node.getReferenceFrame() != osg::Transform::RELATIVE_RF); }
+    void apply(osg::PagedLOD& node) override
+    {
+        // note: PagedLOD defaults to USER_DEFINED_CENTER with radius -1, which OSG reads as "from the children"
+        const bool statedForAll = (node.getCenterMode() != osg::LOD::USE_BOUNDING_SPHERE_CENTER && node.getRadius() >= 0) ||
+                                  node.getNumChildren() >= node.getNumFileNames();
+        visitPaged(node, statedForAll, [&](unsigned child) { return node.getDatabasePath() + node.getFileName(child); });
+    }
+    void apply(osg::ProxyNode& node) override
+    {
+        const bool statedForAll =
+            (node.getCenterMode() != osg::ProxyNode::USE_BOUNDING_SPHERE_CENTER && node.getRadius() >= 0) ||
+            node.getNumChildren() >= node.getNumFileNames();
+        visitPaged(node, statedForAll, [&](unsigned child) { return node.getDatabasePath() + node.getFileName(child); });
+    }
 
     void apply(osg::Drawable& drawable) override
     {
@@ -309,6 +335,61 @@ private:
             --_unpredictableDepth;
     }
 
+    // A paged node: its placeholder first, then its loaded children as usual. `statedForAll`: its bound
+    // covers children not loaded yet (a user-defined centre and radius), not only the loaded ones.
+    template <class FileOf> void visitPaged(osg::Group& node, bool statedForAll, FileOf fileOf)
+    {
+        const core::ObjectId placeholder = addPlaceholder(node, statedForAll);
+        const std::size_t depth = _nodePath.size() - 1; // the node's index in its objects' paths
+        visit(node, false);
+        // note: a loaded tile's geometry must lie within the stated bound, or a hidden placeholder
+        // would skip visible geometry; one that does not keeps its node always traversed.
+        core::SceneObject& stated = _out.scene.objects[placeholder];
+        if (!statedForAll || stated.bounds.empty())
+            return; // always visible already, and nothing stated to exceed
+        const double slack = 1e-6 * (1.0 + glm::length(stated.bounds.extent()));
+        const core::Aabb allowed(stated.bounds.min - core::Vec3(slack), stated.bounds.max + core::Vec3(slack));
+        std::vector<bool> reported(node.getNumChildren(), false);
+        for (core::ObjectId id = placeholder + 1; id < _out.scene.objects.size(); ++id)
+        {
+            const core::Aabb& box = _out.scene.objects[id].bounds;
+            if (box.empty() || (glm::all(glm::greaterThanEqual(box.min, allowed.min)) &&
+                                glm::all(glm::lessThanEqual(box.max, allowed.max))))
+                continue;
+            stated.flags |= core::OBJECT_ALWAYS_VISIBLE;
+            const osg::NodePath& path = _out.refs[id].path;
+            const unsigned child = path.size() > depth + 1 ? node.getChildIndex(path[depth + 1]) : 0;
+            if (child < reported.size() && !reported[child])
+            {
+                reported[child] = true;
+                _out.oversizedTiles.push_back(fileOf(child) + " ('" + node.getName() + "')");
+            }
+        }
+    }
+
+    core::ObjectId addPlaceholder(osg::Group& node, bool statedForAll)
+    {
+        std::uint32_t flags = core::OBJECT_NONE;
+        BoundsAccumulator bounds(localToRoot());
+        const osg::BoundingSphere& sphere = node.getBound();
+        if (sphere.valid())
+        {
+            const osg::Vec3d centre = sphere.center();
+            const double r = sphere.radius();
+            for (unsigned corner = 0; corner < 8; ++corner)
+                bounds.add(centre + osg::Vec3d(corner & 1 ? r : -r, corner & 2 ? r : -r, corner & 4 ? r : -r));
+        }
+        if (!sphere.valid() || !statedForAll || bounds.nonFinite || _unpredictableDepth > 0)
+            flags |= core::OBJECT_ALWAYS_VISIBLE;
+        const core::ObjectId id = _out.scene.addObject(bounds.bounds, 0, flags, node.getName());
+        _out.scene.objects[id].firstTriangle = static_cast<std::uint32_t>(_out.scene.triangles.size());
+        ObjectRef ref{nullptr, _nodePath, localToRoot(), nullptr, 0, &node};
+        _out.refs.push_back(std::move(ref));
+        _out.indexObject(id);
+        _out.pagedNodes.push_back({id, node.getNumChildren()});
+        return id;
+    }
+
     // Visits the root's children one by one to record which ids each of them holds.
     void traverseRootChildren(osg::Group& root)
     {
@@ -330,7 +411,7 @@ private:
 
     void addObject(osg::Drawable& drawable)
     {
-        ObjectRef ref{&drawable, _nodePath, localToRoot(), nullptr, 0};
+        ObjectRef ref{&drawable, _nodePath, localToRoot(), nullptr, 0, nullptr};
 
         std::uint32_t flags = core::OBJECT_NONE;
         if (_unpredictableDepth > 0)
@@ -563,10 +644,27 @@ const char* whyNotAutomaticOccluder(const osg::NodePath& path)
     return occluderEligibility(path).notOccluderBecause;
 }
 
-osg::ref_ptr<ExtractedScene> extractScene(osg::Node& root, const ExtractionOptions& options)
+osg::ref_ptr<ExtractedScene> extractSceneQuietly(osg::Node& root, const ExtractionOptions& options)
 {
     osg::ref_ptr<ExtractedScene> out = new ExtractedScene;
     Extractor(*out, options).run(root);
+    return out;
+}
+
+void warnOversizedTiles(const ExtractedScene& scene, const ExtractedScene* previous)
+{
+    for (const std::string& tile : scene.oversizedTiles)
+        if (!previous || std::find(previous->oversizedTiles.begin(), previous->oversizedTiles.end(), tile) ==
+                             previous->oversizedTiles.end())
+            OSG_WARN << "osgVis: tile " << tile
+                     << " reaches outside the bound its paged node states; that node is always traversed"
+                     << std::endl;
+}
+
+osg::ref_ptr<ExtractedScene> extractScene(osg::Node& root, const ExtractionOptions& options)
+{
+    osg::ref_ptr<ExtractedScene> out = extractSceneQuietly(root, options);
+    warnOversizedTiles(*out, nullptr);
     return out;
 }
 } // namespace osgVis

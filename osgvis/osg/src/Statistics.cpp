@@ -18,6 +18,8 @@ void write(osg::Stats& stats, unsigned frameNumber, const CullStatistics& figure
     stats.setAttribute(frameNumber, STATS_CULL_MS, figures.cullMs);
     if (figures.clustered)
         stats.setAttribute(frameNumber, STATS_CLUSTERS, figures.clustersVisible);
+    if (figures.pagedNodes != 0)
+        stats.setAttribute(frameNumber, STATS_PAGED_SKIPPED, figures.pagedNodesSkipped);
     if (figures.async)
         stats.setAttribute(frameNumber, STATS_ASYNC_FALLBACK, figures.asyncFallback ? 1.0 : 0.0);
     if (figures.backOff)
@@ -45,6 +47,8 @@ void addStatsLines(osgViewer::StatsHandler& handler)
     handler.addUserStatsLine("osgVis visible", text, bar, STATS_VISIBLE, 1.0f, false, false, "", "", 0.0f);
     handler.addUserStatsLine("osgVis triangles", text, bar, STATS_TRIANGLES, 1.0f, false, false, "", "", 0.0f);
     handler.addUserStatsLine("osgVis clusters drawn", text, bar, STATS_CLUSTERS, 1.0f, false, false, "", "", 0.0f);
+    // Paged nodes found hidden, whose tiles the pager is therefore not asked for.
+    handler.addUserStatsLine("osgVis paged skipped", text, bar, STATS_PAGED_SKIPPED, 1.0f, false, false, "", "", 0.0f);
     // The cull thread's time in osgVis (with async on, only the frustum intersection of a region).
     handler.addUserStatsLine("osgVis cull ms", text, bar, STATS_CULL_MS, 1.0f, true, false, "", "", 10.0f);
     handler.addUserStatsLine("osgVis async fallback", text, bar, STATS_ASYNC_FALLBACK, 1.0f, true, false, "", "",

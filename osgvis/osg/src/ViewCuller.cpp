@@ -151,7 +151,8 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     {
         std::lock_guard<std::mutex> lock(_mutex);
         const bool extract = !_scene || _root.get() != &root;
-        const bool reextract = !extract && _dirty;
+        // note: a paged node whose child count changed was merged into or expired by the pager
+        const bool reextract = !extract && (_dirty || _scene->pagedNodesChanged());
         if (extract)
             _scene = extractScene(root, _extractionOptions);
         else if (reextract)
@@ -169,7 +170,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     {
         std::size_t objects = 0, triangles = 0;
         for (const core::SceneObject& object : scene->scene.objects)
-            if (!scene->removed(object.id))
+            if (!scene->removed(object.id) && !scene->placeholder(object.id))
             {
                 ++objects;
                 triangles += object.triangleCount;
@@ -241,6 +242,12 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     {
         if (scene->removed(object.id))
             continue;
+        if (scene->placeholder(object.id))
+        {
+            ++figures.pagedNodes;
+            figures.pagedNodesSkipped += view->visible.test(object.id) ? 0 : 1;
+            continue;
+        }
         ++figures.objects;
         if (view->visible.test(object.id))
         {

@@ -2,6 +2,7 @@
 #include <osgVis/VisibilityGroup>
 
 #include "CullingContext.h"
+#include "PagedNodeCulling.h"
 
 #include <osgUtil/CullVisitor>
 
@@ -64,6 +65,8 @@ void VisibilityGroup::installCullCallbacks(const ExtractedScene& scene)
     for (const ObjectRef& ref : scene.refs)
         if (ref.drawable)
             VisibilityCullCallback::installOn(*ref.drawable);
+        else if (ref.paged)
+            PagedNodeCullCallback::installOn(*ref.paged);
     _callbacksInstalledFor = &scene;
 }
 

@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: MIT
+// Paged tiles with OSG's own DatabasePager running (docs/paging.md): a tile hidden behind a wall is
+// never requested; once seen it loads, is merged, extracted and culled like any object, and the
+// frames are the plain graph's; a hidden tile the pager expires leaves the extraction; a missing or
+// corrupt tile file leaves the rest drawn. Every threading model. Needs a display (Xvfb).
+//
+//   top view: a wall across x in [-14, 14] at y = 10, z in [-12, 12] (it must hide the box of the
+//   row's bounding sphere, not only the row); tile "front" (a box at y = 0) before it, tile
+//   "behind" (a row of boxes at y = 25) behind it. The front view stands at y = -20 looking
+//   along +y (the row is hidden); the side view stands at x = 40 looking along -x past the wall's end.
+#include "TestScenes.h"
+
+#include <osgVis/Statistics>
+#include <osgVis/VisibilityGroup>
+
+#include <osg/Geode>
+#include <osg/Notify>
+#include <osg/PagedLOD>
+#include <osgDB/DatabasePager>
+#include <osgDB/WriteFile>
+#include <osgViewer/Viewer>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <thread>
+#include <unistd.h>
+
+using osgVis::test::CaptureImage;
+using osgVis::test::makeBox;
+using osgVis::test::samePixels;
+using osgVis::test::setUpCapturingCamera;
+
+namespace
+{
+constexpr unsigned Width = 128, Height = 96;
+
+std::filesystem::path tileDirectory()
+{
+    static const std::filesystem::path dir = [] {
+        const std::filesystem::path d =
+            std::filesystem::temp_directory_path() / ("osgvis-paged-test-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(d);
+        return d;
+    }();
+    return dir;
+}
+
+osg::ref_ptr<osg::Geode> boxes(const std::vector<std::pair<osg::Vec3, osg::Vec3>>& extents, const osg::Vec4& colour)
+{
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    for (const auto& [lo, hi] : extents)
+        geode->addDrawable(makeBox(lo, hi, colour));
+    return geode;
+}
+
+// A tile file (written once per process) and a PagedLOD stating the tile's bound.
+osg::ref_ptr<osg::PagedLOD> tile(const std::string& file, osg::Node* content, const osg::BoundingSphere& bound)
+{
+    const std::filesystem::path path = tileDirectory() / file;
+    if (content && !std::filesystem::exists(path))
+    {
+        EXPECT_TRUE(osgDB::writeNodeFile(*content, path.string())) << path;
+    }
+    osg::ref_ptr<osg::PagedLOD> paged = new osg::PagedLOD;
+    paged->setName(file);
+    paged->setCenterMode(osg::LOD::USER_DEFINED_CENTER);
+    paged->setCenter(bound.center());
+    paged->setRadius(bound.radius());
+    paged->setDatabasePath(tileDirectory().string() + "/");
+    paged->setFileName(0, file);
+    paged->setRange(0, 0.0f, 1e30f);
+    return paged;
+}
+
+struct Scene
+{
+    osg::ref_ptr<osg::Group> root;
+    osg::ref_ptr<osg::PagedLOD> front, behind, extra;
+};
+
+// `extraFile`: one more tile before the wall, whose file is missing or corrupt.
+Scene scene(osg::Group* root, const std::string& extraFile = "")
+{
+    Scene s;
+    s.root = root;
+    root->addChild(boxes({{{-14, 10, -12}, {14, 11, 12}}}, {0.8f, 0.8f, 0.8f, 1}));
+    osg::ref_ptr<osg::Geode> front = boxes({{{-1, 0, 0}, {1, 1, 1}}}, {1, 0.3f, 0.2f, 1});
+    s.front = tile("front.osgb", front.get(), front->getBound());
+    std::vector<std::pair<osg::Vec3, osg::Vec3>> row;
+    for (int i = 0; i < 8; ++i)
+        row.push_back({{-10.f + 2.5f * i, 25, 0}, {-9.f + 2.5f * i, 26, 2}});
+    osg::ref_ptr<osg::Geode> behind = boxes(row, {0.2f, 0.4f, 1.0f, 1});
+    s.behind = tile("behind.osgb", behind.get(), behind->getBound());
+    root->addChild(s.front);
+    root->addChild(s.behind);
+    if (!extraFile.empty())
+    {
+        s.extra = tile(extraFile, nullptr, osg::BoundingSphere(osg::Vec3(4, 2, 1), 1.5f));
+        root->addChild(s.extra);
+    }
+    return s;
+}
+
+const osg::Matrixd FrontView =
+    osg::Matrixd::lookAt(osg::Vec3d(0, -20, 1.7), osg::Vec3d(0, 0, 1.5), osg::Vec3d(0, 0, 1));
+const osg::Matrixd SideView = osg::Matrixd::lookAt(osg::Vec3d(40, 18, 1.7), osg::Vec3d(0, 18, 1.2), osg::Vec3d(0, 0, 1));
+
+struct Step
+{
+    osg::Matrixd view;
+    std::function<bool()> settled; // checked after each frame; the step ends 3 frames after it holds
+    std::function<void(osgDB::DatabasePager&)> pager = nullptr; // settings for this step
+};
+
+struct Outcome
+{
+    osg::ref_ptr<osg::Image> image; // the last frame
+    double visible = -1, skipped = -1;
+    bool settled = true; // every step settled before its deadline
+};
+
+Outcome run(osg::Node* root, osgViewer::ViewerBase::ThreadingModel threading, const std::vector<Step>& steps)
+{
+    osgViewer::Viewer viewer;
+    viewer.setThreadingModel(threading);
+    osg::Camera* camera = viewer.getCamera();
+    osg::ref_ptr<CaptureImage> capture = setUpCapturingCamera(*camera, Width, Height);
+    if (!capture)
+        return {};
+    camera->setProjectionMatrixAsPerspective(60.0, double(Width) / Height, 0.1, 200.0);
+    camera->getStats()->collectStats("rendering", true);
+    viewer.setSceneData(root);
+    viewer.realize();
+    Outcome outcome;
+    double time = 0.0;
+    for (const Step& step : steps)
+    {
+        camera->setViewMatrix(step.view);
+        if (step.pager)
+            step.pager(*viewer.getDatabasePager());
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+        int after = -1;
+        while (after < 3)
+        {
+            viewer.frame(time += 0.05);
+            if (after >= 0 || step.settled())
+                ++after;
+            else if (std::chrono::steady_clock::now() > deadline)
+            {
+                outcome.settled = false;
+                break;
+            }
+            else
+                std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+    }
+    viewer.stopThreading();
+    outcome.image = capture->image;
+    const unsigned last = viewer.getFrameStamp()->getFrameNumber();
+    camera->getStats()->getAttribute(last, osgVis::STATS_VISIBLE, outcome.visible);
+    camera->getStats()->getAttribute(last, osgVis::STATS_PAGED_SKIPPED, outcome.skipped);
+    return outcome;
+}
+
+bool loaded(const osg::PagedLOD& paged)
+{
+    return paged.getNumChildren() > 0;
+}
+
+const osgViewer::ViewerBase::ThreadingModel AllModels[] = {
+    osgViewer::ViewerBase::SingleThreaded, osgViewer::ViewerBase::CullDrawThreadPerContext,
+    osgViewer::ViewerBase::DrawThreadPerContext, osgViewer::ViewerBase::CullThreadPerCameraDrawThreadPerContext};
+
+// Live drawable objects (placeholders and empty slots left out) of the group's current extraction.
+unsigned liveObjects(const osgVis::VisibilityGroup& group)
+{
+    osg::ref_ptr<const osgVis::ExtractedScene> extraction = group.getViewCuller()->getScene();
+    unsigned count = 0;
+    for (const osgVis::core::SceneObject& object : extraction->scene.objects)
+        count += !extraction->removed(object.id) && !extraction->placeholder(object.id);
+    return count;
+}
+} // namespace
+
+TEST(PagedViewer, HiddenTileIsNeverRequestedSeenTileLoadsAndDrawsThePlainPixels)
+{
+    const std::string modes = "octree";
+    for (const auto threading : AllModels)
+    {
+        SCOPED_TRACE("threading model " + std::to_string(int(threading)));
+        Scene plain = scene(new osg::Group);
+        const Outcome plainFront = run(plain.root.get(), threading, {{FrontView, [&] { return loaded(*plain.front); }}});
+        if (!plainFront.image || !plainFront.image->data())
+            GTEST_SKIP() << "no GL context (run under xvfb-run)";
+        // Plain OSG requests every tile in the frustum: the hidden row is loaded too.
+        const Outcome plainLoadsAll =
+            run(plain.root.get(), threading, {{FrontView, [&] { return loaded(*plain.behind); }}});
+        EXPECT_TRUE(plainLoadsAll.settled);
+        const Outcome plainSide = run(plain.root.get(), threading, {{SideView, [] { return true; }}});
+        const Outcome plainBack = run(plain.root.get(), threading, {{FrontView, [] { return true; }}});
+
+        osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup(modes);
+        Scene culled = scene(group.get());
+        const Outcome front = run(group.get(), threading, {{FrontView, [&] { return loaded(*culled.front); }}});
+        ASSERT_TRUE(front.settled);
+        // A few more frames give the pager every chance to load what it was asked for.
+        run(group.get(), threading, {{FrontView, [frames = 0]() mutable { return ++frames > 10; }}});
+        EXPECT_FALSE(loaded(*culled.behind));
+        EXPECT_FALSE(culled.behind->getDatabaseRequest(0).valid()) << "the hidden tile was requested";
+        EXPECT_EQ(front.skipped, 1.0);
+        EXPECT_TRUE(samePixels(*plainFront.image, *front.image));
+
+        // Seen from the side, the row loads, is merged and extracted, and draws as in the plain graph.
+        const Outcome side = run(group.get(), threading, {{SideView, [&] { return loaded(*culled.behind); }}});
+        ASSERT_TRUE(side.settled);
+        EXPECT_EQ(side.skipped, 0.0);
+        EXPECT_EQ(liveObjects(*group), 1u + 1u + 8u);
+        EXPECT_TRUE(samePixels(*plainSide.image, *side.image));
+
+        // Back in front, the loaded row is culled object by object, and the tile is not entered.
+        const Outcome back = run(group.get(), threading, {{FrontView, [] { return true; }}});
+        EXPECT_EQ(back.skipped, 1.0);
+        EXPECT_LT(back.visible, 1.0 + 1.0 + 8.0);
+        EXPECT_TRUE(samePixels(*plainBack.image, *back.image));
+    }
+}
+
+TEST(PagedViewer, HiddenTileThePagerExpiresLeavesTheExtraction)
+{
+    osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("octree");
+    Scene culled = scene(group.get());
+    const Outcome outcome = run(group.get(), osgViewer::ViewerBase::SingleThreaded,
+                                {{SideView, [&] { return loaded(*culled.behind) && loaded(*culled.front); }},
+                                 {FrontView,
+                                  [&] { return !loaded(*culled.behind); },
+                                  [](osgDB::DatabasePager& pager) { pager.setTargetMaximumNumberOfPageLOD(0); }}});
+    if (!outcome.image || !outcome.image->data())
+        GTEST_SKIP() << "no GL context (run under xvfb-run)";
+    ASSERT_TRUE(outcome.settled);
+    EXPECT_TRUE(loaded(*culled.front)); // seen every frame: never expired
+    EXPECT_EQ(liveObjects(*group), 1u + 1u); // the wall and the front box; the row's slots are empty
+}
+
+TEST(PagedViewer, MissingOrCorruptTileLeavesTheRestDrawn)
+{
+    {
+        std::ofstream corrupt(tileDirectory() / "corrupt.osgb", std::ios::binary);
+        corrupt << "this is no osgb file";
+    }
+    for (const std::string file : {"missing.osgb", "corrupt.osgb"})
+    {
+        SCOPED_TRACE(file);
+        Scene plain = scene(new osg::Group, file);
+        const Outcome reference =
+            run(plain.root.get(), osgViewer::ViewerBase::SingleThreaded, {{FrontView, [&] { return loaded(*plain.front); }}});
+        if (!reference.image || !reference.image->data())
+            GTEST_SKIP() << "no GL context (run under xvfb-run)";
+        osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("octree");
+        Scene culled = scene(group.get(), file);
+        const Outcome outcome = run(group.get(), osgViewer::ViewerBase::SingleThreaded,
+                                    {{FrontView, [&] { return loaded(*culled.front); }}});
+        ASSERT_TRUE(outcome.settled);
+        EXPECT_FALSE(loaded(*culled.extra));
+        EXPECT_TRUE(samePixels(*reference.image, *outcome.image));
+        EXPECT_EQ(liveObjects(*group), 1u + 1u);
+    }
+}
