@@ -108,7 +108,8 @@ std::string benchUsage()
            "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
            "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8]\n"
            "                   [--mask-slowdown K] [--cull-only]\n"
-           "                   [--dynamic] [--threading MODEL,...] [--async on|off|on,off]\n"
+           "                   [--dynamic] [--paged [--paging-requests N] [--paging-keep N]]\n"
+           "                   [--threading MODEL,...] [--async on|off|on,off]\n"
            "                   [--async-lookahead N] [--async-region X,Y,Z]\n"
            "                   [--volume X0,Y0,Z0,X1,Y1,Z1|paper [--plane-resolution N] [--planes N]\n"
            "                    [--volume-face N] [--volume-eyes N] [--volume-repeat N]]\n"
@@ -157,6 +158,16 @@ std::string benchUsage()
            "  streets every frame, 3 buildings are dropped on existing ones at 1/4 and at 1/2 of\n"
            "  the views, 3 are deleted at 1/3 and at 2/3 (seeded by --seed); the oracle renders\n"
            "  every frame's scene, and the number of changes applied is printed.\n"
+           "--paged: the scene is a paged database (osgvisgen --paged DIR: --scene DIR/root.osgb, walk\n"
+           "  DIR/root.walk) walked with OSG's DatabasePager running, frames back to back; osg and\n"
+           "  module-chain modes, each from a fresh read of the root. Per mode: tile files requested,\n"
+           "  tiles loaded and expired, MB read, peak resident tiles, peak heap growth, pop-in (frames,\n"
+           "  objects and pixels the oracle sees on the fully loaded database whose tile was not loaded\n"
+           "  yet), false-invisible among loaded tiles' objects, fps and its ratio to osg\n"
+           "  (docs/paging.md).\n"
+           "--paging-requests N: visible tiles not loaded yet that a view asks for per frame, nearest\n"
+           "  first (default 4; 0: no limit). --paging-keep N: a loaded tile hidden for at most N\n"
+           "  frames keeps its time stamps fresh (default 120), within OSG_MAX_PAGEDLOD.\n"
            "--threading M1,M2 / --async on,off: also render every osg and module-chain mode under each\n"
            "  OSG threading model (SingleThreaded, CullDrawThreadPerContext, DrawThreadPerContext,\n"
            "  CullThreadPerCameraDrawThreadPerContext; default SingleThreaded) with asynchronous\n"
@@ -311,6 +322,12 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.cullOnly = true;
         else if (flag == "--dynamic")
             options.dynamic = true;
+        else if (flag == "--paged")
+            options.paged = true;
+        else if (flag == "--paging-requests")
+            options.paging.requestsPerFrame = unsigned(parseUnsigned(flag, value()));
+        else if (flag == "--paging-keep")
+            options.paging.keepFrames = unsigned(parseUnsigned(flag, value()));
         else if (flag == "--volume")
             options.volume = value();
         else if (flag == "--plane-resolution")
@@ -374,6 +391,17 @@ BenchOptions parseBenchOptions(int argc, char** argv)
         throw UsageError("--supersample must lie between 1 and 8");
     if (options.dynamic && (options.cullOnly || options.sweeps() || options.maskSweep()))
         throw UsageError("--dynamic renders a walk against the oracle: no --cull-only, --speeds, --threads or --mask-deltas");
+    if (options.paged &&
+        (options.sceneFile.empty() || options.cullOnly || options.dynamic || options.sweeps() ||
+         options.maskSweep() || options.threadingTable() || !options.reportDir.empty() || options.explain ||
+         options.cube || !options.volume.empty() || options.volumeCells > 0 || !options.dumpVisibleDir.empty()))
+        throw UsageError("--paged walks a paged database given by --scene DIR/root.osgb, in a run of its own: no "
+                         "--generate, --cull-only, --dynamic, --threading, --async, --report, --explain, --cube, "
+                         "--volume, --dump-visible or sweeps");
+    const PagingOptions defaultPaging;
+    if (!options.paged && (options.paging.requestsPerFrame != defaultPaging.requestsPerFrame ||
+                           options.paging.keepFrames != defaultPaging.keepFrames))
+        throw UsageError("--paging-requests and --paging-keep go with --paged");
     if (options.maskSlowdown != 1 && !options.maskSweep())
         throw UsageError("--mask-slowdown slows the observer of the mask sweep: give --mask-deltas too");
     // note: without --views the walk's length is known only once loaded; the sweep checks again there.

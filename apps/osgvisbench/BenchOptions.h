@@ -2,6 +2,7 @@
 #pragma once
 // Command line of osgvisbench: what scene, which walk, which modes, at what size, and where the
 // JSON goes. Parsing only: nothing here loads a file or touches GL.
+#include <osgVis/ViewCuller>
 #include <osgVis/core/async/AsyncVisibility.h>
 
 #include <cstddef>
@@ -47,6 +48,8 @@ struct BenchOptions
     std::vector<double> maskDeltas;   // --mask-deltas 0,1,2: cull-only Δ sweep of the mask modes
     unsigned maskSlowdown = 1;        // --mask-slowdown K: the Δ sweep's observer K times slower
     bool cullOnly = false;            // --cull-only: the sweeps alone, no oracle and no rendering
+    bool paged = false;               // --paged: a paged database walked with OSG's DatabasePager (PagedBench)
+    PagingOptions paging;             // --paging-requests N, --paging-keep N (with --paged)
     bool dynamic = false;             // --dynamic: cars, dropped and deleted buildings during the walk (DynamicWalk)
     std::vector<std::string> threading; // --threading A,B: OSG threading models of the threading table
     std::vector<bool> async;            // --async on|off|on,off: async visibility settings of that table

@@ -33,6 +33,8 @@ public:
     ~BenchViewer();
 
     void setSceneData(osg::Node* scene);
+    // The pager the viewer's scene pages through (a paged database); call before setSceneData.
+    void setDatabasePager(osgDB::DatabasePager* pager) { _viewer->setDatabasePager(pager); }
 
     struct FrameTiming
     {

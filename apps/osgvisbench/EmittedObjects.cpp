@@ -31,36 +31,35 @@ double largestMagnitude(const osg::Matrixd& m)
     return largest;
 }
 
-void collectStateGraphLeaves(const osgUtil::StateGraph& graph, std::vector<const osgUtil::RenderLeaf*>& leaves)
+void forEachLeafOfBin(const osgUtil::RenderBin& bin, const std::function<void(const osgUtil::RenderLeaf&)>& visit)
 {
-    for (const auto& leaf : graph._leaves)
-        leaves.push_back(leaf.get());
+    // note: sorting moves the leaves of depth-sorted bins from the state graphs into the leaf list,
+    // so both have to be read.
+    for (const osgUtil::RenderLeaf* leaf : bin.getRenderLeafList())
+        visit(*leaf);
+    for (const osgUtil::StateGraph* graph : bin.getStateGraphList())
+        for (const auto& leaf : graph->_leaves)
+            visit(*leaf);
+    for (const auto& nested : bin.getRenderBinList())
+        forEachLeafOfBin(*nested.second, visit);
 }
 } // namespace
+
+void forEachRenderLeaf(const osgUtil::RenderStage& stage, const std::function<void(const osgUtil::RenderLeaf&)>& visit)
+{
+    for (const auto& pre : stage.getPreRenderList())
+        forEachRenderLeaf(*pre.second, visit);
+    forEachLeafOfBin(stage, visit);
+    for (const auto& post : stage.getPostRenderList())
+        forEachRenderLeaf(*post.second, visit);
+}
 
 EmittedObjects::EmittedObjects(const ExtractedScene& scene) : _scene(scene) {}
 
 void EmittedObjects::collect(const osgUtil::RenderStage& stage, const osg::Matrixd& view, core::VisibleSet& emitted)
 {
     _inverseView = osg::Matrixd::inverse(view);
-    for (const auto& pre : stage.getPreRenderList())
-        collect(*pre.second, view, emitted);
-    collectBin(stage, emitted);
-    for (const auto& post : stage.getPostRenderList())
-        collect(*post.second, view, emitted);
-}
-
-void EmittedObjects::collectBin(const osgUtil::RenderBin& bin, core::VisibleSet& emitted)
-{
-    // note: sorting moves the leaves of depth-sorted bins from the state graphs into the leaf list,
-    // so both have to be read.
-    std::vector<const osgUtil::RenderLeaf*> leaves(bin.getRenderLeafList().begin(), bin.getRenderLeafList().end());
-    for (const osgUtil::StateGraph* graph : bin.getStateGraphList())
-        collectStateGraphLeaves(*graph, leaves);
-    for (const osgUtil::RenderLeaf* leaf : leaves)
-        collectLeaf(*leaf, emitted);
-    for (const auto& nested : bin.getRenderBinList())
-        collectBin(*nested.second, emitted);
+    forEachRenderLeaf(stage, [&](const osgUtil::RenderLeaf& leaf) { collectLeaf(leaf, emitted); });
 }
 
 void EmittedObjects::collectLeaf(const osgUtil::RenderLeaf& leaf, core::VisibleSet& emitted)

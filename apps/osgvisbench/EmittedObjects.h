@@ -9,9 +9,13 @@
 #include <osgUtil/RenderStage>
 
 #include <cstddef>
+#include <functional>
 
 namespace osgVis::bench
 {
+// Calls `visit` for every render leaf of `stage`: its nested bins, pre- and post-render stages too.
+void forEachRenderLeaf(const osgUtil::RenderStage& stage, const std::function<void(const osgUtil::RenderLeaf&)>& visit);
+
 class EmittedObjects
 {
 public:
@@ -27,7 +31,6 @@ public:
     std::size_t unmatchedLeaves() const { return _unmatchedLeaves; }
 
 private:
-    void collectBin(const osgUtil::RenderBin& bin, core::VisibleSet& emitted);
     void collectLeaf(const osgUtil::RenderLeaf& leaf, core::VisibleSet& emitted);
 
     const ExtractedScene& _scene;

@@ -7,6 +7,7 @@
 #include "BenchOptions.h"
 #include "BenchRun.h"
 #include "DynamicBench.h"
+#include "PagedBench.h"
 #include "ReportHtml.h"
 #include "ReportJson.h"
 #include "ReportTable.h"
@@ -119,6 +120,8 @@ int main(int argc, char** argv)
             return runVolumeBench(options, std::cout);
         if (options.volumeCells > 0)
             return runBakedCellCheck(options, std::cout);
+        if (options.paged)
+            return runPagedBench(options, modes, std::cout);
         const BenchReport report = options.dynamic ? runDynamicBench(options, modes) : runBench(options, modes);
         writeReportTable(std::cout, report);
         if (!options.jsonFile.empty())

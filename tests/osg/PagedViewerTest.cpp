@@ -38,15 +38,22 @@ namespace
 {
 constexpr unsigned Width = 128, Height = 96;
 
+// The tile files of this process, removed at exit.
 std::filesystem::path tileDirectory()
 {
-    static const std::filesystem::path dir = [] {
-        const std::filesystem::path d =
+    struct Directory
+    {
+        std::filesystem::path path =
             std::filesystem::temp_directory_path() / ("osgvis-paged-test-" + std::to_string(::getpid()));
-        std::filesystem::create_directories(d);
-        return d;
-    }();
-    return dir;
+        Directory() { std::filesystem::create_directories(path); }
+        ~Directory()
+        {
+            std::error_code ignored;
+            std::filesystem::remove_all(path, ignored);
+        }
+    };
+    static const Directory dir;
+    return dir.path;
 }
 
 osg::ref_ptr<osg::Geode> boxes(const std::vector<std::pair<osg::Vec3, osg::Vec3>>& extents, const osg::Vec4& colour)
@@ -267,5 +274,66 @@ TEST(PagedViewer, MissingOrCorruptTileLeavesTheRestDrawn)
         EXPECT_FALSE(loaded(*culled.extra));
         EXPECT_TRUE(samePixels(*reference.image, *outcome.image));
         EXPECT_EQ(liveObjects(*group), 1u + 1u);
+    }
+}
+
+TEST(PagedViewer, RequestsGoNearestFirstWithinTheBudget)
+{
+    // Four tiles side by side ahead, none hiding another, at 5, 10, 15 and 20 along the view.
+    osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("octree");
+    osgVis::PagingOptions paging;
+    paging.requestsPerFrame = 1;
+    group->setPagingOptions(paging);
+    std::vector<osg::ref_ptr<osg::PagedLOD>> tiles;
+    for (int i = 3; i >= 0; --i) // farthest first in the graph: the order must come from distance
+    {
+        const float y = 5.0f * float(i + 1);
+        osg::ref_ptr<osg::Geode> content = boxes({{{-2.f + i, y, 0}, {-1.5f + i, y + 0.5f, 1}}}, {1, 1, 0, 1});
+        tiles.push_back(tile("row" + std::to_string(i) + ".osgb", content.get(), content->getBound()));
+        group->addChild(tiles.back());
+    }
+    std::vector<bool> requestedAfterFirstFrame;
+    const Outcome outcome = run(group.get(), osgViewer::ViewerBase::SingleThreaded,
+                                {{osg::Matrixd::lookAt(osg::Vec3d(0, -3, 0.5), osg::Vec3d(0, 10, 0.5), osg::Vec3d(0, 0, 1)),
+                                  [&] {
+                                      if (requestedAfterFirstFrame.empty())
+                                          for (const auto& t : tiles)
+                                              requestedAfterFirstFrame.push_back(t->getDatabaseRequest(0).valid());
+                                      return std::all_of(tiles.begin(), tiles.end(),
+                                                         [](const auto& t) { return loaded(*t); });
+                                  }}});
+    if (!outcome.image || !outcome.image->data())
+        GTEST_SKIP() << "no GL context (run under xvfb-run)";
+    ASSERT_TRUE(outcome.settled); // every visible tile loads in the end
+    // tiles[3] is the nearest (i = 0).
+    EXPECT_EQ(requestedAfterFirstFrame, (std::vector<bool>{false, false, false, true}));
+}
+
+TEST(PagedViewer, HiddenTilesSeenLatelyAreKeptFreshWithinThePagersBudget)
+{
+    for (const unsigned keepFrames : {120u, 0u})
+    {
+        SCOPED_TRACE("keepFrames " + std::to_string(keepFrames));
+        osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("octree");
+        osgVis::PagingOptions paging;
+        paging.keepFrames = keepFrames;
+        group->setPagingOptions(paging);
+        Scene culled = scene(group.get());
+        osg::ref_ptr<osg::Geode> content = boxes({{{-4, 30, 0}, {-3, 31, 1}}}, {0.3f, 1, 0.3f, 1});
+        osg::ref_ptr<osg::PagedLOD> farther = tile("farther.osgb", content.get(), content->getBound());
+        group->addChild(farther);
+        // Seen from the side, three tiles load; from the front two of them are hidden, and the
+        // pager's budget of two loaded PagedLODs leaves room to keep one of those.
+        const Outcome outcome =
+            run(group.get(), osgViewer::ViewerBase::SingleThreaded,
+                {{SideView, [&] { return loaded(*culled.behind) && loaded(*culled.front) && loaded(*farther); }},
+                 {FrontView, [frames = 0]() mutable { return ++frames > 30; },
+                  [](osgDB::DatabasePager& pager) { pager.setTargetMaximumNumberOfPageLOD(2); }}});
+        if (!outcome.image || !outcome.image->data())
+            GTEST_SKIP() << "no GL context (run under xvfb-run)";
+        ASSERT_TRUE(outcome.settled);
+        // 30 frames 20 ms apart: past the pager's expiry delay (0.1 s), within the 120 kept frames.
+        EXPECT_TRUE(loaded(*culled.front));
+        EXPECT_EQ(int(loaded(*culled.behind)) + int(loaded(*farther)), keepFrames != 0 ? 1 : 0);
     }
 }

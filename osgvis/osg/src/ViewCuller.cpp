@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/ViewCuller>
 
+#include "PagingPolicy.h"
+
 #include <osgVis/core/api/ModuleRegistry.h>
 #include <osgVis/core/scene/View.h>
 
@@ -8,10 +10,12 @@
 #include <osg/FrameStamp>
 #include <osg/Notify>
 #include <osg/Viewport>
+#include <osgDB/DatabasePager>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include <chrono>
+#include <limits>
 
 namespace osgVis
 {
@@ -27,6 +31,7 @@ struct ViewCuller::PerView
     std::unique_ptr<core::AsyncVisibility> async;
     core::BackOff backOff;
     std::chrono::steady_clock::time_point previousCull{}; // when this view last culled
+    std::vector<unsigned> placeholderLastVisible; // per object id: the frame this view last saw a paged node
 
     ~PerView() { async.reset(); }
 };
@@ -75,6 +80,18 @@ void ViewCuller::setBackOff(const core::BackOffOptions& options)
     std::lock_guard<std::mutex> lock(_mutex);
     _backOffOptions = options;
     _views.clear();
+}
+
+void ViewCuller::setPagingOptions(const PagingOptions& options)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    _pagingOptions = options;
+}
+
+PagingOptions ViewCuller::getPagingOptions() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _pagingOptions;
 }
 
 core::BackOffOptions ViewCuller::getBackOffOptions() const
@@ -148,8 +165,10 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     std::shared_ptr<PerView> view;
     bool extracted = false;
     std::string modes;
+    PagingOptions paging;
     {
         std::lock_guard<std::mutex> lock(_mutex);
+        paging = _pagingOptions;
         const bool extract = !_scene || _root.get() != &root;
         // note: a paged node whose child count changed was merged into or expired by the pager
         const bool reextract = !extract && (_dirty || _scene->pagedNodesChanged());
@@ -234,6 +253,17 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         figures.asyncFallback = figures.async;
         view->chain.cull(coreView, view->visible);
     }
+    if (!figures.backedOff)
+    {
+        const osg::Vec3d eye = osg::Matrixd::inverse(modelView).getTrans();
+        const auto* pager = dynamic_cast<const osgDB::DatabasePager*>(cv.getDatabaseRequestHandler());
+        const std::size_t residentBudget =
+            pager ? pager->getTargetMaximumNumberOfPageLOD() : std::numeric_limits<std::size_t>::max();
+        const PagingFigures pagingFigures = applyPagingPolicy(paging, *scene, view->visible, eye, frameStamp,
+                                                              residentBudget, view->placeholderLastVisible);
+        figures.pagedNodesDeferred = pagingFigures.deferred;
+        figures.pagedNodesKeptFresh = pagingFigures.keptFresh;
+    }
     const auto end = std::chrono::steady_clock::now();
     if (debugLock.owns_lock())
         debugLock.unlock();
@@ -245,7 +275,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         if (scene->placeholder(object.id))
         {
             ++figures.pagedNodes;
-            figures.pagedNodesSkipped += view->visible.test(object.id) ? 0 : 1;
+            figures.pagedNodesSkipped += view->visible.test(object.id) ? 0 : 1; // deferred ones included
             continue;
         }
         ++figures.objects;

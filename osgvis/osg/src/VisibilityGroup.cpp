@@ -21,6 +21,7 @@ VisibilityGroup::VisibilityGroup(const VisibilityGroup& other, const osg::CopyOp
     _culler->setAsync(other.getAsync(), other.getAsyncOptions());
     _culler->setBackOff(other.getBackOffOptions());
     _culler->setExtractionOptions(other.getExtractionOptions());
+    _culler->setPagingOptions(other.getPagingOptions());
 }
 
 VisibilityGroup::~VisibilityGroup() = default;
