@@ -23,6 +23,7 @@
 #include <cmath>
 #include <limits>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <malloc.h>
@@ -266,7 +267,7 @@ PagedRow runMode(const BenchMode& mode, const BenchOptions& options, const std::
 }
 
 void writeJson(const std::string& path, const BenchOptions& options, const std::string& scene, std::size_t tiles,
-               std::size_t views, const core::Walk& walk, const std::vector<PagedRow>& rows)
+               std::size_t tilesSeen, std::size_t views, const core::Walk& walk, const std::vector<PagedRow>& rows)
 {
     std::ofstream out(path);
     if (!out)
@@ -278,7 +279,9 @@ void writeJson(const std::string& path, const BenchOptions& options, const std::
         return q + "\"";
     };
     out << "{\n  \"kind\": \"paged\",\n  \"command\": " << quoted(options.commandLine) << ",\n  \"scene\": "
-        << quoted(scene) << ",\n  \"tiles\": " << tiles << ",\n  \"views\": " << views << ",\n  \"width\": "
+        << quoted(scene) << ",\n  \"tiles\": " << tiles << ",\n  \"tiles_seen_by_oracle\": " << tilesSeen
+        << ",\n  \"osg_max_pagedlod\": " << quoted(std::getenv("OSG_MAX_PAGEDLOD") ? std::getenv("OSG_MAX_PAGEDLOD") : "")
+        << ",\n  \"views\": " << views << ",\n  \"width\": "
         << walk.width << ",\n  \"height\": " << walk.height << ",\n  \"modes\": [\n";
     for (std::size_t r = 0; r < rows.size(); ++r)
     {
@@ -345,6 +348,13 @@ int runPagedBench(const BenchOptions& options, const std::vector<BenchMode>& mod
     }
     const std::size_t tileCount = full.firstObject.size();
     full.root = nullptr; // the modes' memory is measured without it
+    // Tiles the oracle sees at least once: what a mode with no pop-in must load at least.
+    std::vector<bool> everSeen(tileCount, false);
+    for (const oracle::IdBufferOracle::Result& result : seen)
+        for (std::uint32_t object : result.visible)
+            if (full.tileOfObject[object] != ~0u)
+                everSeen[full.tileOfObject[object]] = true;
+    const std::size_t tilesSeen = std::size_t(std::count(everSeen.begin(), everSeen.end(), true));
 
     std::vector<PagedRow> rows;
     for (const BenchMode& mode : modes)
@@ -358,8 +368,9 @@ int runPagedBench(const BenchOptions& options, const std::vector<BenchMode>& mod
     std::snprintf(line, sizeof line, "%-18s %9s %7s %7s %8s %9s %9s %8s %8s %10s %6s %7s %6s\n", "mode", "requested",
                   "loaded", "expired", "MB read", "peak res", "heap MB", "pop-in f", "pop-in o", "pop-in px", "fi",
                   "fps", "vs osg");
-    out << "paged database " << scene.name << ": " << tileCount << " tiles, " << views.size() << " views at "
-        << walk.width << "x" << walk.height << " (frames back to back, OSG's DatabasePager)\n"
+    out << "paged database " << scene.name << ": " << tileCount << " tiles (" << tilesSeen
+        << " seen by the oracle along the walk), " << views.size() << " views at " << walk.width << "x" << walk.height
+        << " (frames back to back, OSG's DatabasePager)\n"
         << line;
     int failures = 0;
     for (const PagedRow& row : rows)
@@ -380,7 +391,7 @@ int runPagedBench(const BenchOptions& options, const std::vector<BenchMode>& mod
         }
     }
     if (!options.jsonFile.empty())
-        writeJson(options.jsonFile, options, scene.name, tileCount, views.size(), walk, rows);
+        writeJson(options.jsonFile, options, scene.name, tileCount, tilesSeen, views.size(), walk, rows);
     return failures == 0 ? 0 : 1;
 }
 } // namespace osgVis::bench

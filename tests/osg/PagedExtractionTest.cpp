@@ -5,16 +5,29 @@
 // expiry shows as a changed child count and re-extracts with stable ids.
 #include "TestScenes.h"
 
+#include <osgVis/Occluder>
 #include <osgVis/SceneExtractor>
+
+#include <osgVis/gen/Generator.h>
+#include <osgVis/gen/PagedScene.h>
 
 #include <osg/Geode>
 #include <osg/Notify>
 #include <osg/PagedLOD>
 #include <osg/ProxyNode>
 
+#include <osg/ValueObject>
+#include <osgDB/ReadFile>
+
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
+#include <unistd.h>
+
+#include <map>
 #include <string>
+#include <tuple>
 
 using osgVis::test::makeBox;
 
@@ -184,4 +197,154 @@ TEST(PagedExtraction, MergedAndExpiredTilesShowAsChildCountsAndKeepIds)
     ASSERT_EQ(expired->changes.size(), 1u);
     EXPECT_EQ(expired->changes[0].kind, osgVis::core::SceneChange::Kind::Removed);
     EXPECT_EQ(expired->changes[0].objects, std::vector<osgVis::core::ObjectId>{2});
+}
+
+namespace
+{
+// Live objects by (node, path) with their bounds, triangle count and flags: what two extractions
+// of the same graph must agree on, whatever their ids.
+std::map<std::pair<const osg::Node*, osg::NodePath>, std::tuple<osgVis::core::Vec3, osgVis::core::Vec3, unsigned, unsigned>>
+liveObjects(const osgVis::ExtractedScene& scene)
+{
+    std::map<std::pair<const osg::Node*, osg::NodePath>,
+             std::tuple<osgVis::core::Vec3, osgVis::core::Vec3, unsigned, unsigned>>
+        out;
+    for (const osgVis::core::SceneObject& object : scene.scene.objects)
+        if (!scene.removed(object.id))
+            out[{scene.refs[object.id].node(), scene.refs[object.id].path}] = {object.bounds.min, object.bounds.max,
+                                                                               object.triangleCount, object.flags};
+    return out;
+}
+} // namespace
+
+TEST(PagedExtraction, UpdateExtractsOnlyTheChangedTilesAndAgreesWithAFullExtraction)
+{
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(boxGeode({0, 0, 0}, {1, 1, 1}));
+    osg::ref_ptr<osg::Group> district = new osg::Group; // paged nodes one level down
+    root->addChild(district);
+    osg::ref_ptr<osg::PagedLOD> a = statedTile("a.osgb", {5, 5, 5}, 3.0f);
+    osg::ref_ptr<osg::PagedLOD> b = statedTile("b.osgb", {15, 5, 5}, 3.0f);
+    district->addChild(a);
+    district->addChild(b);
+    osg::ref_ptr<osgVis::ExtractedScene> first = osgVis::extractScene(*root);
+    ASSERT_EQ(first->scene.objects.size(), 3u);
+
+    // Tile a merges, holding a box and a paged node of its own.
+    osg::ref_ptr<osg::Group> tileA = new osg::Group;
+    tileA->addChild(boxGeode({4, 4, 4}, {6, 6, 6}));
+    osg::ref_ptr<osg::PagedLOD> nested = statedTile("a1.osgb", {5, 5, 7}, 1.0f);
+    tileA->addChild(nested);
+    a->addChild(tileA);
+    osg::ref_ptr<osgVis::ExtractedScene> merged = osgVis::updatePagedScene(*first);
+    ASSERT_TRUE(merged);
+    EXPECT_EQ(merged->replaces, first.get());
+    ASSERT_EQ(merged->scene.objects.size(), 5u);
+    ASSERT_EQ(merged->changes.size(), 1u);
+    EXPECT_EQ(merged->changes[0].kind, osgVis::core::SceneChange::Kind::Inserted);
+    EXPECT_EQ(merged->changes[0].objects, (std::vector<osgVis::core::ObjectId>{3, 4}));
+    EXPECT_TRUE(merged->placeholder(4));
+    EXPECT_EQ(merged->pagedNodes.size(), 3u);
+    EXPECT_FALSE(merged->pagedNodesChanged());
+    EXPECT_EQ(liveObjects(*merged), liveObjects(*osgVis::extractScene(*root)));
+    EXPECT_EQ(merged->childRanges[1].ids, (std::vector<osgVis::core::ObjectId>{1, 2, 3, 4}));
+
+    // The nested tile merges, then tile a expires with everything below it; b merges meanwhile.
+    nested->addChild(boxGeode({4.5f, 4.5f, 6.5f}, {5.5f, 5.5f, 7.5f}));
+    osg::ref_ptr<osgVis::ExtractedScene> deeper = osgVis::updatePagedScene(*merged);
+    ASSERT_TRUE(deeper);
+    EXPECT_EQ(deeper->scene.objects.size(), 6u);
+    EXPECT_EQ(liveObjects(*deeper), liveObjects(*osgVis::extractScene(*root)));
+    a->removeChildren(0, 1);
+    b->addChild(boxGeode({14, 4, 4}, {16, 6, 6}));
+    osg::ref_ptr<osgVis::ExtractedScene> expired = osgVis::updatePagedScene(*deeper);
+    ASSERT_TRUE(expired);
+    ASSERT_EQ(expired->changes.size(), 2u);
+    EXPECT_EQ(expired->changes[0].kind, osgVis::core::SceneChange::Kind::Removed);
+    EXPECT_EQ(expired->changes[0].objects, (std::vector<osgVis::core::ObjectId>{3, 4, 5}));
+    EXPECT_EQ(expired->changes[1].kind, osgVis::core::SceneChange::Kind::Inserted);
+    EXPECT_EQ(expired->changes[1].objects, (std::vector<osgVis::core::ObjectId>{6}));
+    EXPECT_EQ(expired->pagedNodes.size(), 2u); // the nested node went with its tile
+    EXPECT_EQ(liveObjects(*expired), liveObjects(*osgVis::extractScene(*root)));
+    EXPECT_EQ(expired->childRanges[1].ids, (std::vector<osgVis::core::ObjectId>{1, 2, 6}));
+    EXPECT_EQ(expired->find(a.get(), osg::NodePath{root.get(), district.get(), a.get()}), 1u);
+}
+
+TEST(PagedExtraction, UpdateFallsBackWhereOnlyAFullExtractionIsRight)
+{
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    osg::ref_ptr<osg::PagedLOD> fromChildren = new osg::PagedLOD; // no stated radius
+    fromChildren->setFileName(0, "c.osgb");
+    root->addChild(fromChildren);
+    osg::ref_ptr<osgVis::ExtractedScene> first = osgVis::extractScene(*root);
+    fromChildren->addChild(boxGeode({0, 0, 0}, {1, 1, 1}));
+    EXPECT_FALSE(osgVis::updatePagedScene(*first)); // its placeholder's box would change
+
+    // A tile holding a stand-alone occluder.
+    osg::ref_ptr<osg::Group> other = new osg::Group;
+    osg::ref_ptr<osg::PagedLOD> tile = statedTile("o.osgb", {0, 0, 0}, 5.0f);
+    other->addChild(tile);
+    osg::ref_ptr<osgVis::ExtractedScene> before = osgVis::extractScene(*other);
+    osg::ref_ptr<osgVis::Occluder> occluder = new osgVis::Occluder;
+    occluder->addPolygon({{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}});
+    tile->addChild(occluder);
+    EXPECT_FALSE(osgVis::updatePagedScene(*before));
+}
+
+TEST(PagedExtraction, UpdateWarnsAboutAMergedTileOutsideItsBound)
+{
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    osg::ref_ptr<osg::PagedLOD> tile = statedTile("wide.osgb", {0, 0, 0}, 1.0f);
+    root->addChild(tile);
+    osg::ref_ptr<osgVis::ExtractedScene> first = osgVis::extractScene(*root);
+    EXPECT_EQ(first->scene.objects[0].flags, osgVis::core::OBJECT_NONE);
+    tile->addChild(boxGeode({-3, 0, 0}, {3, 1, 1}));
+    CapturedWarnings warnings;
+    osg::ref_ptr<osgVis::ExtractedScene> merged = osgVis::updatePagedScene(*first);
+    ASSERT_TRUE(merged);
+    EXPECT_NE(merged->scene.objects[0].flags & osgVis::core::OBJECT_ALWAYS_VISIBLE, 0u);
+    EXPECT_NE(warnings.text().find("tile wide.osgb ('wide.osgb') reaches outside"), std::string::npos)
+        << warnings.text();
+}
+
+TEST(PagedExtraction, GeneratedTilesStateATighterBoxThanTheirSphere)
+{
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("osgvis-paged-gen-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    osgVis::gen::GenerateOptions generate;
+    generate.kind = osgVis::gen::SceneKind::City;
+    generate.triangles = 20000;
+    osgVis::gen::PagedOptions paging;
+    paging.tiles = 16;
+    const osgVis::gen::PagedSummary summary =
+        osgVis::gen::writePagedScene(*osgVis::gen::generate(generate).root, dir.string(), paging);
+    osg::ref_ptr<osg::Node> root = osgDB::readRefNodeFile(summary.rootPath);
+    ASSERT_TRUE(root.valid());
+    osg::ref_ptr<osgVis::ExtractedScene> unloaded = osgVis::extractScene(*root);
+    ASSERT_EQ(unloaded->pagedNodes.size(), summary.tiles);
+    double boxVolume = 0, sphereVolume = 0;
+    for (const osgVis::PagedNodeRecord& record : unloaded->pagedNodes)
+    {
+        auto* paged = static_cast<osg::PagedLOD*>(unloaded->refs[record.placeholder].paged.get());
+        osg::Vec3d lo, hi;
+        ASSERT_TRUE(paged->getUserValue(osgVis::PagedBoundsMin, lo));
+        ASSERT_TRUE(paged->getUserValue(osgVis::PagedBoundsMax, hi));
+        const osgVis::core::SceneObject& placeholder = unloaded->scene.objects[record.placeholder];
+        EXPECT_EQ(placeholder.flags, osgVis::core::OBJECT_NONE);
+        const osgVis::core::Vec3 extent = placeholder.bounds.extent();
+        boxVolume += extent.x * extent.y * extent.z;
+        sphereVolume += std::pow(2.0 * paged->getRadius(), 3.0);
+        // Loaded, every tile lies within its box: none is flagged.
+        paged->addChild(osgDB::readRefNodeFile(paged->getDatabasePath() + paged->getFileName(0)));
+    }
+    EXPECT_LT(boxVolume, 0.5 * sphereVolume);
+    CapturedWarnings warnings;
+    osg::ref_ptr<osgVis::ExtractedScene> loaded = osgVis::updatePagedScene(*unloaded);
+    ASSERT_TRUE(loaded);
+    EXPECT_TRUE(loaded->oversizedTiles.empty());
+    EXPECT_EQ(warnings.text(), "");
+    for (const osgVis::PagedNodeRecord& record : loaded->pagedNodes)
+        EXPECT_EQ(loaded->scene.objects[record.placeholder].flags, osgVis::core::OBJECT_NONE);
+    std::filesystem::remove_all(dir);
 }

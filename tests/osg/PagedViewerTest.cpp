@@ -277,21 +277,23 @@ TEST(PagedViewer, MissingOrCorruptTileLeavesTheRestDrawn)
     }
 }
 
-TEST(PagedViewer, RequestsGoNearestFirstWithinTheBudget)
+TEST(PagedViewer, TilesBehindTilesStillLoadingWaitTheirTurn)
 {
-    // Four tiles side by side ahead, none hiding another, at 5, 10, 15 and 20 along the view.
+    // Four tiles in a row straight ahead at 5, 10, 15 and 20, each covering the next on screen, and
+    // a fifth, farthest of all, off to the side where none covers it.
     osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("octree");
     osgVis::PagingOptions paging;
     paging.requestsPerFrame = 1;
     group->setPagingOptions(paging);
     std::vector<osg::ref_ptr<osg::PagedLOD>> tiles;
-    for (int i = 3; i >= 0; --i) // farthest first in the graph: the order must come from distance
-    {
-        const float y = 5.0f * float(i + 1);
-        osg::ref_ptr<osg::Geode> content = boxes({{{-2.f + i, y, 0}, {-1.5f + i, y + 0.5f, 1}}}, {1, 1, 0, 1});
-        tiles.push_back(tile("row" + std::to_string(i) + ".osgb", content.get(), content->getBound()));
+    const auto add = [&](const std::string& name, const osg::Vec3& lo, const osg::Vec3& hi) {
+        osg::ref_ptr<osg::Geode> content = boxes({{lo, hi}}, {1, 1, 0, 1});
+        tiles.push_back(tile(name, content.get(), content->getBound()));
         group->addChild(tiles.back());
-    }
+    };
+    add("side.osgb", {9, 25, 0}, {9.5f, 25.5f, 1}); // first in the graph: the order must come from distance
+    for (int i = 3; i >= 0; --i)
+        add("row" + std::to_string(i) + ".osgb", {-0.25f, 5.f * (i + 1), 0}, {0.25f, 5.f * (i + 1) + 0.5f, 1});
     std::vector<bool> requestedAfterFirstFrame;
     const Outcome outcome = run(group.get(), osgViewer::ViewerBase::SingleThreaded,
                                 {{osg::Matrixd::lookAt(osg::Vec3d(0, -3, 0.5), osg::Vec3d(0, 10, 0.5), osg::Vec3d(0, 0, 1)),
@@ -305,8 +307,8 @@ TEST(PagedViewer, RequestsGoNearestFirstWithinTheBudget)
     if (!outcome.image || !outcome.image->data())
         GTEST_SKIP() << "no GL context (run under xvfb-run)";
     ASSERT_TRUE(outcome.settled); // every visible tile loads in the end
-    // tiles[3] is the nearest (i = 0).
-    EXPECT_EQ(requestedAfterFirstFrame, (std::vector<bool>{false, false, false, true}));
+    // side, row3 (farthest) .. row0 (nearest): the nearest, the one budgeted behind it, and the side tile.
+    EXPECT_EQ(requestedAfterFirstFrame, (std::vector<bool>{true, false, false, true, true}));
 }
 
 TEST(PagedViewer, HiddenTilesSeenLatelyAreKeptFreshWithinThePagersBudget)

@@ -6,6 +6,7 @@
 #include <osg/MatrixTransform>
 #include <osg/NodeVisitor>
 #include <osg/PagedLOD>
+#include <osg/ValueObject>
 #include <osgDB/WriteFile>
 
 #include <algorithm>
@@ -129,6 +130,10 @@ PagedSummary writePagedScene(osg::Node& scene, const std::string& dir, const Pag
         paged->setCenterMode(osg::LOD::USER_DEFINED_CENTER);
         paged->setCenter(b.center());
         paged->setRadius(b.radius() * 1.001f);
+        // note: the box as user values, the names osgVis::PagedBoundsMin/Max (osgVis/SceneExtractor),
+        // which read them as a bound tighter than the sphere; plain OSG ignores them.
+        paged->setUserValue("osgVis bounds min", osg::Vec3d(b._min));
+        paged->setUserValue("osgVis bounds max", osg::Vec3d(b._max));
         paged->setFileName(0, name);
         paged->setRange(0, 0.0f, range);
         root->addChild(paged.get());

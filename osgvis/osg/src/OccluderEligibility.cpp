@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "OccluderEligibility.h"
 
+#include "PagedNodeCulling.h"
+
 #include "CullingContext.h"
 
 #include <osgVis/Cell>
@@ -12,6 +14,8 @@
 #include <osg/Drawable>
 #include <osg/FrontFace>
 #include <osg/Geode>
+#include <osg/LOD>
+#include <osg/ProxyNode>
 #include <osg/MatrixTransform>
 #include <osg/PolygonMode>
 #include <osg/PositionAttitudeTransform>
@@ -19,6 +23,7 @@
 
 #include <osgVis/core/scene/Scene.h>
 
+#include <limits>
 #include <typeinfo>
 
 namespace osgVis
@@ -85,7 +90,29 @@ struct DrawnState
 };
 
 // Nodes whose cull traversal always draws their drawables where extraction put them.
-bool drawsEveryFrame(const osg::Node& node, bool isRoot)
+// An LOD child whose range holds every distance (every pixel size) is drawn whenever the LOD is
+// traversed, as is every loaded child of a ProxyNode.
+bool childDrawnWheneverTraversed(const osg::Node& node, const osg::Node* child)
+{
+    if (dynamic_cast<const osg::ProxyNode*>(&node))
+        return true;
+    const auto* lod = dynamic_cast<const osg::LOD*>(&node);
+    if (!lod || !child)
+        return false;
+    const unsigned index = lod->getChildIndex(child);
+    return index < lod->getNumRanges() && lod->getMinRange(index) <= 0.0f &&
+           lod->getMaxRange(index) >= std::numeric_limits<float>::max();
+}
+
+// note: a paged node is skipped by its osgVis callback only when its placeholder is hidden, and then
+// whatever its children would hide is hidden already by what hides them.
+bool ownCallbackOnly(const osg::Node& node)
+{
+    const osg::Callback* cb = node.getCullCallback();
+    return !cb || (dynamic_cast<const PagedNodeCullCallback*>(cb) && !cb->getNestedCallback());
+}
+
+bool drawsEveryFrame(const osg::Node& node, const osg::Node* next, bool isRoot)
 {
     if (node.asDrawable())
     {
@@ -93,12 +120,12 @@ bool drawsEveryFrame(const osg::Node& node, bool isRoot)
         const auto* own = dynamic_cast<const VisibilityCullCallback*>(cb);
         return !node.asDrawable()->getDrawCallback() && (!cb || (own && !own->getChained()));
     }
-    if (node.getCullCallback() && !isRoot)
+    if (!isRoot && !ownCallbackOnly(node))
         return false;
     const std::type_info& t = typeid(node);
     return isRoot || t == typeid(osg::Group) || t == typeid(osg::Geode) || t == typeid(osg::MatrixTransform) ||
            t == typeid(osg::PositionAttitudeTransform) || t == typeid(Occluder) || t == typeid(Cell) ||
-           t == typeid(Portal);
+           t == typeid(Portal) || childDrawnWheneverTraversed(node, next);
 }
 
 bool fillsBothSides(const osg::StateAttribute* attribute)
@@ -126,7 +153,7 @@ OccluderEligibility occluderEligibility(const osg::NodePath& path)
     bool everyFrame = true;
     for (std::size_t i = 0; i < path.size(); ++i)
     {
-        everyFrame = everyFrame && drawsEveryFrame(*path[i], i == 0);
+        everyFrame = everyFrame && drawsEveryFrame(*path[i], i + 1 < path.size() ? path[i + 1] : nullptr, i == 0);
         if (const osg::StateSet* ss = path[i]->getStateSet())
             state.apply(*ss);
     }

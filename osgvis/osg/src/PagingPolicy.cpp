@@ -24,6 +24,31 @@ double distanceToBox(const osg::Vec3d& eye, const core::Aabb& box)
     return std::sqrt(squared);
 }
 
+// The box's extent on screen, in normalized device coordinates; the whole screen when it reaches
+// behind the eye.
+struct ScreenRect
+{
+    double x0 = -1, y0 = -1, x1 = 1, y1 = 1;
+    bool overlaps(const ScreenRect& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+};
+
+ScreenRect screenRect(const core::Aabb& box, const osg::Matrixd& rootToClip)
+{
+    ScreenRect rect{2, 2, -2, -2};
+    for (unsigned corner = 0; corner < 8; ++corner)
+    {
+        const osg::Vec4d p = osg::Vec4d(corner & 1 ? box.max.x : box.min.x, corner & 2 ? box.max.y : box.min.y,
+                                        corner & 4 ? box.max.z : box.min.z, 1.0) * rootToClip;
+        if (p.w() <= 1e-9)
+            return ScreenRect{};
+        rect.x0 = std::min(rect.x0, p.x() / p.w());
+        rect.x1 = std::max(rect.x1, p.x() / p.w());
+        rect.y0 = std::min(rect.y0, p.y() / p.w());
+        rect.y1 = std::max(rect.y1, p.y() / p.w());
+    }
+    return rect;
+}
+
 // What PagedLOD::traverse would have stamped had the cull entered it.
 void renewStamps(osg::PagedLOD& node, const osg::FrameStamp& frameStamp)
 {
@@ -37,9 +62,12 @@ void renewStamps(osg::PagedLOD& node, const osg::FrameStamp& frameStamp)
 } // namespace
 
 PagingFigures applyPagingPolicy(const PagingOptions& options, const ExtractedScene& scene, core::VisibleSet& visible,
-                                const osg::Vec3d& eye, const osg::FrameStamp* frameStamp, std::size_t residentBudget,
+                                const osg::Matrixd& rootToEye, const osg::Matrixd& projection,
+                                const osg::FrameStamp* frameStamp, std::size_t residentBudget,
                                 std::vector<unsigned>& lastVisible)
 {
+    const osg::Vec3d eye = osg::Matrixd::inverse(rootToEye).getTrans();
+    const osg::Matrixd rootToClip = rootToEye * projection;
     PagingFigures figures;
     if (scene.pagedNodes.empty())
         return figures;
@@ -80,13 +108,27 @@ PagingFigures applyPagingPolicy(const PagingOptions& options, const ExtractedSce
         renewStamps(*kept.second, *frameStamp);
     figures.keptFresh = unsigned(recent.size());
     // note: a node with no child loaded draws nothing, so leaving it out this frame hides nothing;
-    // it only delays its request behind those of nearer tiles.
-    if (options.requestsPerFrame != 0 && waiting.size() > options.requestsPerFrame)
+    // it only delays its request behind those of nearer tiles that may hide it once loaded. A tile
+    // no nearer waiting tile covers on screen is asked for at once.
+    if (options.requestsPerFrame == 0 || waiting.size() <= options.requestsPerFrame)
+        return figures;
+    std::sort(waiting.begin(), waiting.end());
+    std::vector<ScreenRect> nearer;
+    nearer.reserve(waiting.size());
+    unsigned covered = 0; // requested although a nearer waiting tile covers them
+    for (const auto& [distance, id] : waiting)
     {
-        std::nth_element(waiting.begin(), waiting.begin() + options.requestsPerFrame, waiting.end());
-        for (auto it = waiting.begin() + options.requestsPerFrame; it != waiting.end(); ++it)
+        const ScreenRect rect = screenRect(scene.scene.objects[id].bounds, rootToClip);
+        const bool behindNearer =
+            std::any_of(nearer.begin(), nearer.end(), [&](const ScreenRect& r) { return r.overlaps(rect); });
+        nearer.push_back(rect);
+        if (!behindNearer)
+            continue;
+        if (covered < options.requestsPerFrame)
+            ++covered;
+        else
         {
-            visible.clear(it->second);
+            visible.clear(id);
             ++figures.deferred;
         }
     }

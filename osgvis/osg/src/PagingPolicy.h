@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Internal: what a view's visible set does to the pager, after the chain culled (docs/paging.md).
-// Requests go nearest first, a few per frame, so that the tiles loaded first can hide the ones
-// behind them before those are asked for; a loaded tile hidden only for a moment keeps its time
+// Requests go nearest first: a tile that a nearer tile still loading covers on screen waits (a few
+// are let through per frame), so that the tiles loaded first can hide the ones behind them before
+// those are asked for; a loaded tile hidden only for a moment keeps its time
 // stamps fresh, so the pager does not expire it and load it again when it shows.
 #include <osgVis/SceneExtractor>
 #include <osgVis/ViewCuller>
@@ -21,11 +22,13 @@ struct PagingFigures
     unsigned keptFresh = 0; ///< hidden loaded paged nodes whose time stamps were renewed
 };
 
-// `lastVisible`: per object id, the frame a placeholder was last visible in this view (grown as
-// needed). Clears the visible bit of deferred placeholders; renews the stamps of kept ones, at most
+// `rootToEye`, `projection`: the view's matrices (OSG's row-vector convention). `lastVisible`: per
+// object id, the frame a placeholder was last visible in this view (grown as needed). Clears the
+// visible bit of deferred placeholders; renews the stamps of kept ones, at most
 // so many that the loaded paged nodes visible or kept stay within `residentBudget` (the pager's
 // target number of PagedLODs, OSG_MAX_PAGEDLOD).
 PagingFigures applyPagingPolicy(const PagingOptions& options, const ExtractedScene& scene, core::VisibleSet& visible,
-                                const osg::Vec3d& eye, const osg::FrameStamp* frameStamp, std::size_t residentBudget,
+                                const osg::Matrixd& rootToEye, const osg::Matrixd& projection,
+                                const osg::FrameStamp* frameStamp, std::size_t residentBudget,
                                 std::vector<unsigned>& lastVisible);
 } // namespace osgVis

@@ -138,7 +138,7 @@ osg::ref_ptr<ExtractedScene> reextractScene(osg::Node& root, const ExtractedScen
 
     out->oversizedTiles = std::move(fresh->oversizedTiles);
     for (const PagedNodeRecord& record : fresh->pagedNodes)
-        out->pagedNodes.push_back({stableId[record.placeholder], record.children});
+        out->pagedNodes.push_back({stableId[record.placeholder], record.children, record.childNodes});
 
     out->childRanges.reserve(fresh->childRanges.size());
     for (const ChildRange& range : fresh->childRanges)

@@ -24,6 +24,7 @@
 #include <osg/Projection>
 #include <osg/ProxyNode>
 #include <osg/TriangleFunctor>
+#include <osg/ValueObject>
 
 #include <algorithm>
 #include <cmath>
@@ -252,6 +253,95 @@ bool plainCullCallback(const osg::Drawable& drawable)
     return own && !own->getChained();
 }
 
+unsigned fileCount(const osg::Group& node)
+{
+    if (const auto* paged = dynamic_cast<const osg::PagedLOD*>(&node))
+        return paged->getNumFileNames();
+    const auto* proxy = dynamic_cast<const osg::ProxyNode*>(&node);
+    return proxy ? proxy->getNumFileNames() : 0;
+}
+} // namespace
+
+namespace
+{
+bool sphereStated(const osg::Group& node)
+{
+    // note: PagedLOD and ProxyNode default to USER_DEFINED_CENTER with radius -1, which OSG reads as
+    // "from the children"
+    if (const auto* paged = dynamic_cast<const osg::PagedLOD*>(&node))
+        return paged->getCenterMode() != osg::LOD::USE_BOUNDING_SPHERE_CENTER && paged->getRadius() >= 0;
+    const auto* proxy = dynamic_cast<const osg::ProxyNode*>(&node);
+    return proxy && proxy->getCenterMode() != osg::ProxyNode::USE_BOUNDING_SPHERE_CENTER && proxy->getRadius() >= 0;
+}
+
+// The box the node's user values state (PagedBoundsMin/Max), in its local frame.
+bool boxStated(const osg::Group& node, osg::BoundingBoxd& box)
+{
+    osg::Vec3d lo, hi;
+    if (!node.getUserValue(PagedBoundsMin, lo) || !node.getUserValue(PagedBoundsMax, hi))
+        return false;
+    box = osg::BoundingBoxd(lo, hi);
+    return box.valid();
+}
+} // namespace
+
+bool boundStated(const osg::Group& node)
+{
+    osg::BoundingBoxd box;
+    return sphereStated(node) || boxStated(node, box);
+}
+
+bool boundCoversAllChildren(const osg::Group& node)
+{
+    return boundStated(node) || node.getNumChildren() >= fileCount(node);
+}
+
+std::string tileFile(const osg::Group& node, unsigned child)
+{
+    if (const auto* paged = dynamic_cast<const osg::PagedLOD*>(&node))
+        return child < paged->getNumFileNames() ? paged->getDatabasePath() + paged->getFileName(child) : "";
+    const auto* proxy = dynamic_cast<const osg::ProxyNode*>(&node);
+    return proxy && child < proxy->getNumFileNames() ? proxy->getDatabasePath() + proxy->getFileName(child) : "";
+}
+
+void checkWithinStatedBound(ExtractedScene& out, core::ObjectId placeholder, std::size_t depth, core::ObjectId from)
+{
+    // note: a loaded tile's geometry must lie within the stated bound, or a hidden placeholder would
+    // skip visible geometry; one that does not keeps its node always traversed.
+    const osg::Group& node = *out.refs[placeholder].paged;
+    core::SceneObject& stated = out.scene.objects[placeholder];
+    if (!boundCoversAllChildren(node) || stated.bounds.empty())
+        return; // always visible already, and nothing stated to exceed
+    const double slack = 1e-6 * (1.0 + glm::length(stated.bounds.extent()));
+    const core::Aabb allowed(stated.bounds.min - core::Vec3(slack), stated.bounds.max + core::Vec3(slack));
+    std::vector<bool> oversized(node.getNumChildren(), false);
+    const auto childOf = [&](core::ObjectId id) {
+        const osg::NodePath& path = out.refs[id].path;
+        return path.size() > depth + 1 ? node.getChildIndex(path[depth + 1]) : 0u;
+    };
+    for (core::ObjectId id = from; id < out.scene.objects.size(); ++id)
+    {
+        const core::Aabb& box = out.scene.objects[id].bounds;
+        if (box.empty() || (glm::all(glm::greaterThanEqual(box.min, allowed.min)) &&
+                            glm::all(glm::lessThanEqual(box.max, allowed.max))))
+            continue;
+        stated.flags |= core::OBJECT_ALWAYS_VISIBLE;
+        const unsigned child = childOf(id);
+        if (child < oversized.size() && !oversized[child])
+        {
+            oversized[child] = true;
+            out.oversizedTiles.push_back(tileFile(node, child) + " ('" + node.getName() + "')");
+        }
+    }
+    // note: OSG culls the node by the bound it states, so such a tile's geometry outside it may go
+    // undrawn: none of the tile may occlude.
+    for (core::ObjectId id = from; id < out.scene.objects.size(); ++id)
+        if (childOf(id) < oversized.size() && oversized[childOf(id)])
+            out.scene.objects[id].flags |= core::OBJECT_NO_AUTO_OCCLUDER;
+}
+
+namespace
+{
 class Extractor : public osg::NodeVisitor
 {
 public:
@@ -267,28 +357,33 @@ public:
         resolvePortals();
     }
 
-    void apply(osg::Node& node) override { visit(node, false); }
-    void apply(osg::Group& node) override { visit(node, false); }
-    void apply(osg::Geode& node) override { visit(node, false); }
-    void apply(osg::Billboard& node) override { visit(node, true); }
-    void apply(osg::Projection& node) override { visit(node, true); }
-    void apply(osg::Camera& node) override { visit(node, &node != _root); }
-    void apply(osg::AutoTransform& node) override { visit(node, true); }
-    void apply(osg::Transform& node) override { visit(node, node.getReferenceFrame() != osg::Transform::RELATIVE_RF); }
-    void apply(osg::PagedLOD& node) override
+    // Extracts `child` and its subtree, appended to the scene, as a full extraction from
+    // `prefix.front()` would reach it through `prefix` (root .. child's parent).
+    void runBelow(const osg::NodePath& prefix, osg::Node& child)
     {
-        // note: PagedLOD defaults to USER_DEFINED_CENTER with radius -1, which OSG reads as "from the children"
-        const bool statedForAll = (node.getCenterMode() != osg::LOD::USE_BOUNDING_SPHERE_CENTER && node.getRadius() >= 0) ||
-                                  node.getNumChildren() >= node.getNumFileNames();
-        visitPaged(node, statedForAll, [&](unsigned child) { return node.getDatabasePath() + node.getFileName(child); });
+        _root = prefix.front();
+        for (osg::Node* node : prefix)
+        {
+            pushOntoNodePath(node);
+            _unpredictableDepth += placedOnlyAtCull(*node);
+            _occluderDepth += dynamic_cast<Occluder*>(node) != nullptr;
+        }
+        child.accept(*this);
+        for (std::size_t i = 0; i < prefix.size(); ++i)
+            popFromNodePath();
+        resolvePortals();
     }
-    void apply(osg::ProxyNode& node) override
-    {
-        const bool statedForAll =
-            (node.getCenterMode() != osg::ProxyNode::USE_BOUNDING_SPHERE_CENTER && node.getRadius() >= 0) ||
-            node.getNumChildren() >= node.getNumFileNames();
-        visitPaged(node, statedForAll, [&](unsigned child) { return node.getDatabasePath() + node.getFileName(child); });
-    }
+
+    void apply(osg::Node& node) override { visit(node, placedOnlyAtCull(node)); }
+    void apply(osg::Group& node) override { visit(node, placedOnlyAtCull(node)); }
+    void apply(osg::Geode& node) override { visit(node, placedOnlyAtCull(node)); }
+    void apply(osg::Billboard& node) override { visit(node, placedOnlyAtCull(node)); }
+    void apply(osg::Projection& node) override { visit(node, placedOnlyAtCull(node)); }
+    void apply(osg::Camera& node) override { visit(node, placedOnlyAtCull(node)); }
+    void apply(osg::AutoTransform& node) override { visit(node, placedOnlyAtCull(node)); }
+    void apply(osg::Transform& node) override { visit(node, placedOnlyAtCull(node)); }
+    void apply(osg::PagedLOD& node) override { visitPaged(node); }
+    void apply(osg::ProxyNode& node) override { visitPaged(node); }
 
     void apply(osg::Drawable& drawable) override
     {
@@ -298,6 +393,19 @@ public:
     }
 
 private:
+    // The cull traversal places this node's subtree in a way extraction cannot know: screen-aligned,
+    // in an absolute frame, under its own projection or camera.
+    bool placedOnlyAtCull(const osg::Node& node) const
+    {
+        if (dynamic_cast<const osg::Billboard*>(&node) || dynamic_cast<const osg::Projection*>(&node) ||
+            dynamic_cast<const osg::AutoTransform*>(&node))
+            return true;
+        if (dynamic_cast<const osg::Camera*>(&node))
+            return &node != _root;
+        const osg::Transform* transform = node.asTransform();
+        return transform && transform->getReferenceFrame() != osg::Transform::RELATIVE_RF;
+    }
+
     // `unpredictable`: the cull traversal places this node's subtree in a way extraction cannot know
     // (screen-aligned, absolute frame, own projection), so its objects must never be culled.
     void visit(osg::Node& node, bool unpredictable)
@@ -335,58 +443,45 @@ private:
             --_unpredictableDepth;
     }
 
-    // A paged node: its placeholder first, then its loaded children as usual. `statedForAll`: its bound
-    // covers children not loaded yet (a user-defined centre and radius), not only the loaded ones.
-    template <class FileOf> void visitPaged(osg::Group& node, bool statedForAll, FileOf fileOf)
+    // A paged node: its placeholder first, then its loaded children as usual.
+    void visitPaged(osg::Group& node)
     {
-        const core::ObjectId placeholder = addPlaceholder(node, statedForAll);
+        const core::ObjectId placeholder = addPlaceholder(node, boundCoversAllChildren(node));
         const std::size_t depth = _nodePath.size() - 1; // the node's index in its objects' paths
         visit(node, false);
-        // note: a loaded tile's geometry must lie within the stated bound, or a hidden placeholder
-        // would skip visible geometry; one that does not keeps its node always traversed.
-        core::SceneObject& stated = _out.scene.objects[placeholder];
-        if (!statedForAll || stated.bounds.empty())
-            return; // always visible already, and nothing stated to exceed
-        const double slack = 1e-6 * (1.0 + glm::length(stated.bounds.extent()));
-        const core::Aabb allowed(stated.bounds.min - core::Vec3(slack), stated.bounds.max + core::Vec3(slack));
-        std::vector<bool> reported(node.getNumChildren(), false);
-        for (core::ObjectId id = placeholder + 1; id < _out.scene.objects.size(); ++id)
-        {
-            const core::Aabb& box = _out.scene.objects[id].bounds;
-            if (box.empty() || (glm::all(glm::greaterThanEqual(box.min, allowed.min)) &&
-                                glm::all(glm::lessThanEqual(box.max, allowed.max))))
-                continue;
-            stated.flags |= core::OBJECT_ALWAYS_VISIBLE;
-            const osg::NodePath& path = _out.refs[id].path;
-            const unsigned child = path.size() > depth + 1 ? node.getChildIndex(path[depth + 1]) : 0;
-            if (child < reported.size() && !reported[child])
-            {
-                reported[child] = true;
-                _out.oversizedTiles.push_back(fileOf(child) + " ('" + node.getName() + "')");
-            }
-        }
+        checkWithinStatedBound(_out, placeholder, depth, placeholder + 1);
     }
 
     core::ObjectId addPlaceholder(osg::Group& node, bool statedForAll)
     {
         std::uint32_t flags = core::OBJECT_NONE;
-        BoundsAccumulator bounds(localToRoot());
+        // In the node's frame: the sphere's cube, cut down to a stated box where there is one (the
+        // geometry must lie in both).
+        osg::BoundingBoxd local;
         const osg::BoundingSphere& sphere = node.getBound();
         if (sphere.valid())
         {
-            const osg::Vec3d centre = sphere.center();
-            const double r = sphere.radius();
-            for (unsigned corner = 0; corner < 8; ++corner)
-                bounds.add(centre + osg::Vec3d(corner & 1 ? r : -r, corner & 2 ? r : -r, corner & 4 ? r : -r));
+            const osg::Vec3d r(sphere.radius(), sphere.radius(), sphere.radius());
+            local = osg::BoundingBoxd(osg::Vec3d(sphere.center()) - r, osg::Vec3d(sphere.center()) + r);
         }
-        if (!sphere.valid() || !statedForAll || bounds.nonFinite || _unpredictableDepth > 0)
+        osg::BoundingBoxd stated;
+        if (boxStated(node, stated))
+            local = sphereStated(node) && local.valid() ? local.intersect(stated) : stated;
+        BoundsAccumulator bounds(localToRoot());
+        if (local.valid())
+            for (unsigned corner = 0; corner < 8; ++corner)
+                bounds.add(local.corner(corner));
+        if (!local.valid() || !statedForAll || bounds.nonFinite || _unpredictableDepth > 0)
             flags |= core::OBJECT_ALWAYS_VISIBLE;
         const core::ObjectId id = _out.scene.addObject(bounds.bounds, 0, flags, node.getName());
         _out.scene.objects[id].firstTriangle = static_cast<std::uint32_t>(_out.scene.triangles.size());
         ObjectRef ref{nullptr, _nodePath, localToRoot(), nullptr, 0, &node};
         _out.refs.push_back(std::move(ref));
         _out.indexObject(id);
-        _out.pagedNodes.push_back({id, node.getNumChildren()});
+        PagedNodeRecord record{id, node.getNumChildren(), {}};
+        for (unsigned child = 0; child < node.getNumChildren(); ++child)
+            record.childNodes.push_back(node.getChild(child));
+        _out.pagedNodes.push_back(std::move(record));
         return id;
     }
 
@@ -642,6 +737,11 @@ std::uint32_t defaultClusterThreshold()
 const char* whyNotAutomaticOccluder(const osg::NodePath& path)
 {
     return occluderEligibility(path).notOccluderBecause;
+}
+
+void extractBelow(ExtractedScene& out, const osg::NodePath& prefix, osg::Node& child, const ExtractionOptions& options)
+{
+    Extractor(out, options).runBelow(prefix, child);
 }
 
 osg::ref_ptr<ExtractedScene> extractSceneQuietly(osg::Node& root, const ExtractionOptions& options)

@@ -170,10 +170,15 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         std::lock_guard<std::mutex> lock(_mutex);
         paging = _pagingOptions;
         const bool extract = !_scene || _root.get() != &root;
-        // note: a paged node whose child count changed was merged into or expired by the pager
-        const bool reextract = !extract && (_dirty || _scene->pagedNodesChanged());
+        // note: a paged node whose child count changed was merged into or expired by the pager; only
+        // its children are extracted again, unless the whole root is dirty anyway
+        const bool paged = !extract && !_dirty && _scene->pagedNodesChanged();
+        const bool reextract = !extract && (_dirty || paged);
+        osg::ref_ptr<ExtractedScene> updated = paged ? updatePagedScene(*_scene, _extractionOptions) : nullptr;
         if (extract)
             _scene = extractScene(root, _extractionOptions);
+        else if (updated)
+            _scene = updated;
         else if (reextract)
             _scene = reextractScene(root, *_scene, _extractionOptions);
         extracted = extract || reextract;
@@ -255,11 +260,10 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     }
     if (!figures.backedOff)
     {
-        const osg::Vec3d eye = osg::Matrixd::inverse(modelView).getTrans();
         const auto* pager = dynamic_cast<const osgDB::DatabasePager*>(cv.getDatabaseRequestHandler());
         const std::size_t residentBudget =
             pager ? pager->getTargetMaximumNumberOfPageLOD() : std::numeric_limits<std::size_t>::max();
-        const PagingFigures pagingFigures = applyPagingPolicy(paging, *scene, view->visible, eye, frameStamp,
+        const PagingFigures pagingFigures = applyPagingPolicy(paging, *scene, view->visible, modelView, projection, frameStamp,
                                                               residentBudget, view->placeholderLastVisible);
         figures.pagedNodesDeferred = pagingFigures.deferred;
         figures.pagedNodesKeptFresh = pagingFigures.keptFresh;

@@ -2,8 +2,8 @@
 #pragma once
 // A scene written as a paged database (docs/paging.md): its drawables cut into tiles on a grid, one
 // .osgb file per tile, and a root file holding one osg::PagedLOD per tile that states the tile's
-// bounding sphere (a user-defined centre and radius) and loads it within a range. Stock osgviewer
-// pages it with OSG's DatabasePager.
+// bounding sphere (a user-defined centre and radius) and, as user values, its bounding box, and
+// loads it within a range. Stock osgviewer pages it with OSG's DatabasePager.
 #include <osg/Node>
 
 #include <cstdint>
