@@ -118,6 +118,7 @@ TEST(GenApp, PagedDatabaseLoadsTileByTileAsStockOsgDoes)
     ASSERT_EQ(run.exitCode, 0) << run.output;
     EXPECT_NE(run.output.find((dir / "root.osgb").string()), std::string::npos) << run.output;
     EXPECT_TRUE(std::filesystem::exists(dir / "root.walk"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "culled.osgt"));
     EXPECT_FALSE(std::filesystem::exists(scratchDir() / "paged.osgb")); // no -o: the paged files only
 
     // Read as osgviewer reads it: the tiles' directory comes from the root file's own path.

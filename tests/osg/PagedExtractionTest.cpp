@@ -7,6 +7,7 @@
 
 #include <osgVis/Occluder>
 #include <osgVis/SceneExtractor>
+#include <osgVis/VisibilityGroup>
 
 #include <osgVis/gen/Generator.h>
 #include <osgVis/gen/PagedScene.h>
@@ -346,5 +347,17 @@ TEST(PagedExtraction, GeneratedTilesStateATighterBoxThanTheirSphere)
     EXPECT_EQ(warnings.text(), "");
     for (const osgVis::PagedNodeRecord& record : loaded->pagedNodes)
         EXPECT_EQ(loaded->scene.objects[record.placeholder].flags, osgVis::core::OBJECT_NONE);
+
+    // DIR/culled.osgt: the database under a VisibilityGroup, read through osgVis's serializers
+    // (OSG_LIBRARY_PATH, as stock osgviewer would find them).
+    osg::ref_ptr<osg::Node> culled = osgDB::readRefNodeFile(summary.culledPath);
+    auto* group = dynamic_cast<osgVis::VisibilityGroup*>(culled.get());
+    ASSERT_TRUE(group) << summary.culledPath;
+    EXPECT_EQ(group->getModes(), "octree");
+    ASSERT_EQ(group->getNumChildren(), 1u);
+    auto* proxy = dynamic_cast<osg::ProxyNode*>(group->getChild(0));
+    ASSERT_TRUE(proxy);
+    ASSERT_EQ(proxy->getNumChildren(), 1u); // root.osgb, loaded with it
+    EXPECT_EQ(proxy->getChild(0)->asGroup()->getNumChildren(), summary.tiles);
     std::filesystem::remove_all(dir);
 }

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <stdexcept>
 #include <vector>
@@ -142,6 +143,18 @@ PagedSummary writePagedScene(osg::Node& scene, const std::string& dir, const Pag
     const std::filesystem::path rootPath = std::filesystem::path(dir) / "root.osgb";
     write(*root, rootPath, summary);
     summary.rootPath = rootPath.string();
+
+    // The same database under an osgVis::VisibilityGroup, as text that osgVis's serializers read
+    // (note: OSG's text header names a generator and its version, two words)
+    // (stock osgviewer with osgVis's plugins on OSG_LIBRARY_PATH); written without them.
+    const std::filesystem::path culledPath = std::filesystem::path(dir) / "culled.osgt";
+    std::ofstream culled(culledPath);
+    culled << "#Ascii Scene\n#Version 161\n#Generator osgvisgen 1\n\n"
+              "osgVis::VisibilityGroup {\n  UniqueID 1\n  Children 1 {\n    osg::ProxyNode {\n      UniqueID 2\n"
+              "      FileNames 1 {\n        \"root.osgb\"\n      }\n    }\n  }\n  Modes \"octree\"\n}\n";
+    if (!culled)
+        throw std::runtime_error("cannot write '" + culledPath.string() + "'");
+    summary.culledPath = culledPath.string();
     return summary;
 }
 } // namespace osgVis::gen

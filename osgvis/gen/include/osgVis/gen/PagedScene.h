@@ -23,9 +23,11 @@ struct PagedSummary
     std::size_t drawables = 0;  ///< drawable instances placed in them
     std::uint64_t bytes = 0;    ///< of all files, the root's included
     std::string rootPath;       ///< DIR/root.osgb
+    std::string culledPath;     ///< DIR/culled.osgt: root.osgb under an osgVis::VisibilityGroup ("octree")
 };
 
-// Writes `scene` into the existing directory `dir` as DIR/root.osgb and DIR/tile_NNNN.osgb. Each
+// Writes `scene` into the existing directory `dir` as DIR/root.osgb and DIR/tile_NNNN.osgb, and
+// DIR/culled.osgt, which holds root.osgb (a ProxyNode) under an osgVis::VisibilityGroup. Each
 // drawable instance goes whole into the tile of its bound's centre, in a geode of its own under one
 // transform holding its path's matrix and the merged state sets of its path (node masks, data
 // variance and marker nodes are not kept). Throws
