@@ -10,6 +10,7 @@
 //   along +y (the row is hidden); the side view stands at x = 40 looking along -x past the wall's end.
 #include "TestScenes.h"
 
+#include <osgVis/CullVisitor>
 #include <osgVis/Statistics>
 #include <osgVis/VisibilityGroup>
 
@@ -134,7 +135,9 @@ struct Outcome
     bool settled = true; // every step settled before its deadline
 };
 
-Outcome run(osg::Node* root, osgViewer::ViewerBase::ThreadingModel threading, const std::vector<Step>& steps)
+// `setUp`: what to do to the viewer before it is realized (install osgVis::CullVisitor).
+Outcome run(osg::Node* root, osgViewer::ViewerBase::ThreadingModel threading, const std::vector<Step>& steps,
+            const std::function<void(osgViewer::Viewer&)>& setUp = nullptr)
 {
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(threading);
@@ -145,6 +148,8 @@ Outcome run(osg::Node* root, osgViewer::ViewerBase::ThreadingModel threading, co
     camera->setProjectionMatrixAsPerspective(60.0, double(Width) / Height, 0.1, 200.0);
     camera->getStats()->collectStats("rendering", true);
     viewer.setSceneData(root);
+    if (setUp)
+        setUp(viewer);
     viewer.realize();
     Outcome outcome;
     double time = 0.0;
@@ -425,4 +430,26 @@ TEST(PagedViewer, GeneratedPagedCityDrawsThePlainPixelsOnceLoadingSettles)
         }
         EXPECT_GT(skipped, 0.0); // some tile was left unrequested, or the comparison proves little
     }
+}
+
+TEST(PagedViewer, OsgVisCullVisitorSkipsHiddenTilesToo)
+{
+    // No VisibilityGroup: osgVis::CullVisitor culls the whole graph under the camera.
+    Scene plain = scene(new osg::Group);
+    const Outcome reference = run(plain.root.get(), osgViewer::ViewerBase::SingleThreaded,
+                                  {{SideView, [&] { return loaded(*plain.behind) && loaded(*plain.front); }}});
+    if (!reference.image || !reference.image->data())
+        GTEST_SKIP() << "no GL context (run under xvfb-run)";
+    Scene culled = scene(new osg::Group);
+    const auto install = [](osgViewer::Viewer& viewer) { osgVis::CullVisitor::installOn(viewer, "octree"); };
+    const Outcome front = run(culled.root.get(), osgViewer::ViewerBase::SingleThreaded,
+                              {{FrontView, [&, frames = 0]() mutable { return loaded(*culled.front) && ++frames > 10; }}},
+                              install);
+    ASSERT_TRUE(front.settled);
+    EXPECT_FALSE(loaded(*culled.behind));
+    EXPECT_FALSE(culled.behind->getDatabaseRequest(0).valid()) << "the hidden tile was requested";
+    const Outcome side = run(culled.root.get(), osgViewer::ViewerBase::SingleThreaded,
+                             {{SideView, [&] { return loaded(*culled.behind); }}}, install);
+    ASSERT_TRUE(side.settled);
+    EXPECT_TRUE(samePixels(*reference.image, *side.image));
 }
