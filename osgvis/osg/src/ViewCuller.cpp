@@ -225,7 +225,10 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         if (replaced)
             view->chain.sceneReplaced(scene->scene, scene->changes);
         else
+        {
             view->chain.setScene(scene->scene);
+            view->placeholderLastVisible.clear(); // new ids
+        }
         if (view->async && replaced)
             view->async->sceneReplaced(sharedScene(scene), scene->changes);
         else if (view->async)
