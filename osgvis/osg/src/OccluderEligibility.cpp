@@ -15,6 +15,7 @@
 #include <osg/FrontFace>
 #include <osg/Geode>
 #include <osg/LOD>
+#include <osg/PagedLOD>
 #include <osg/ProxyNode>
 #include <osg/MatrixTransform>
 #include <osg/PolygonMode>
@@ -98,6 +99,12 @@ bool childDrawnWheneverTraversed(const osg::Node& node, const osg::Node* child)
         return true;
     const auto* lod = dynamic_cast<const osg::LOD*>(&node);
     if (!lod || !child)
+        return false;
+    // note: OSG culls an LOD by its bound; a plain LOD's user-stated sphere may be smaller than its
+    // children (nothing checks it, as the extraction checks a paged node's tiles), and then part of
+    // a child may go undrawn.
+    const bool paged = dynamic_cast<const osg::PagedLOD*>(lod) != nullptr;
+    if (!paged && lod->getCenterMode() == osg::LOD::USER_DEFINED_CENTER && lod->getRadius() >= 0)
         return false;
     const unsigned index = lod->getChildIndex(child);
     return index < lod->getNumRanges() && lod->getMinRange(index) <= 0.0f &&
