@@ -191,6 +191,13 @@ const osgViewer::ViewerBase::ThreadingModel AllModels[] = {
     osgViewer::ViewerBase::SingleThreaded, osgViewer::ViewerBase::CullDrawThreadPerContext,
     osgViewer::ViewerBase::DrawThreadPerContext, osgViewer::ViewerBase::CullThreadPerCameraDrawThreadPerContext};
 
+osg::ref_ptr<osgVis::VisibilityGroup> octreeGroup(const osgVis::PagingOptions& paging)
+{
+    osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("octree");
+    group->setPagingOptions(paging);
+    return group;
+}
+
 // Live drawable objects (placeholders and empty slots left out) of the group's current extraction.
 unsigned liveObjects(const osgVis::VisibilityGroup& group)
 {
@@ -318,10 +325,9 @@ TEST(PagedViewer, TilesBehindTilesStillLoadingWaitTheirTurn)
 {
     // Four tiles in a row straight ahead at 5, 10, 15 and 20, each covering the next on screen, and
     // a fifth, farthest of all, off to the side where none covers it.
-    osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("octree");
     osgVis::PagingOptions paging;
     paging.requestsPerFrame = 1;
-    group->setPagingOptions(paging);
+    osg::ref_ptr<osgVis::VisibilityGroup> group = octreeGroup(paging);
     std::vector<osg::ref_ptr<osg::PagedLOD>> tiles;
     const auto add = [&](const std::string& name, const osg::Vec3& lo, const osg::Vec3& hi) {
         osg::ref_ptr<osg::Geode> content = boxes({{lo, hi}}, {1, 1, 0, 1});
@@ -353,10 +359,9 @@ TEST(PagedViewer, HiddenTilesSeenLatelyAreKeptFreshWithinThePagersBudget)
     for (const unsigned keepFrames : {120u, 0u})
     {
         SCOPED_TRACE("keepFrames " + std::to_string(keepFrames));
-        osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("octree");
         osgVis::PagingOptions paging;
         paging.keepFrames = keepFrames;
-        group->setPagingOptions(paging);
+        osg::ref_ptr<osgVis::VisibilityGroup> group = octreeGroup(paging);
         Scene culled = scene(group.get());
         osg::ref_ptr<osg::Geode> content = boxes({{{-4, 30, 0}, {-3, 31, 1}}}, {0.3f, 1, 0.3f, 1});
         osg::ref_ptr<osg::PagedLOD> farther = tile("farther.osgb", content.get(), content->getBound());
@@ -452,4 +457,31 @@ TEST(PagedViewer, OsgVisCullVisitorSkipsHiddenTilesToo)
                              {{SideView, [&] { return loaded(*culled.behind); }}}, install);
     ASSERT_TRUE(side.settled);
     EXPECT_TRUE(samePixels(*reference.image, *side.image));
+}
+
+TEST(PagedViewer, TileOnThePathAheadIsPrefetchedThoughHidden)
+{
+    // The eye walks along +y towards the wall; the row behind it lies on the path ahead.
+    for (const unsigned prefetchFrames : {0u, 200u})
+    {
+        SCOPED_TRACE("prefetchFrames " + std::to_string(prefetchFrames));
+        osgVis::PagingOptions paging;
+        paging.prefetchFrames = prefetchFrames;
+        osg::ref_ptr<osgVis::VisibilityGroup> group = octreeGroup(paging);
+        Scene culled = scene(group.get());
+        std::vector<Step> steps;
+        for (int i = 0; i < 12; ++i)
+            steps.push_back({osg::Matrixd::lookAt(osg::Vec3d(0, -20 + 0.2 * i, 1.7), osg::Vec3d(0, 0 + 0.2 * i, 1.5),
+                                                  osg::Vec3d(0, 0, 1)),
+                             [frames = 0]() mutable { return ++frames > 1; }});
+        steps.push_back({steps.back().view, [&, frames = 0]() mutable {
+                             return loaded(*culled.front) && (loaded(*culled.behind) || ++frames > 20);
+                         }});
+        const Outcome outcome = run(group.get(), osgViewer::ViewerBase::SingleThreaded, steps);
+        if (!outcome.image || !outcome.image->data())
+            GTEST_SKIP() << "no GL context (run under xvfb-run)";
+        ASSERT_TRUE(outcome.settled);
+        EXPECT_EQ(outcome.skipped, 1.0); // the row is hidden all along
+        EXPECT_EQ(loaded(*culled.behind), prefetchFrames != 0);
+    }
 }

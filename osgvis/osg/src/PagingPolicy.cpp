@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "PagingPolicy.h"
 
+#include "Extraction.h"
+
 #include <osg/PagedLOD>
 
 #include <algorithm>
@@ -47,6 +49,29 @@ ScreenRect screenRect(const core::Aabb& box, const osg::Matrixd& rootToClip)
         rect.y1 = std::max(rect.y1, p.y() / p.w());
     }
     return rect;
+}
+
+// Whether the segment a + t·d, t in [0, 1], meets the box (slabs).
+bool segmentMeetsBox(const osg::Vec3d& a, const osg::Vec3d& d, const core::Aabb& box)
+{
+    double enter = 0.0, leave = 1.0;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        if (std::abs(d[axis]) < 1e-12)
+        {
+            if (a[axis] < box.min[axis] || a[axis] > box.max[axis])
+                return false;
+            continue;
+        }
+        double t0 = (box.min[axis] - a[axis]) / d[axis], t1 = (box.max[axis] - a[axis]) / d[axis];
+        if (t0 > t1)
+            std::swap(t0, t1);
+        enter = std::max(enter, t0);
+        leave = std::min(leave, t1);
+        if (enter > leave)
+            return false;
+    }
+    return true;
 }
 
 // What PagedLOD::traverse would have stamped had the cull entered it.
@@ -133,5 +158,28 @@ PagingFigures applyPagingPolicy(const PagingOptions& options, const ExtractedSce
         }
     }
     return figures;
+}
+unsigned prefetchAhead(const ExtractedScene& scene, const core::VisibleSet& visible, const osg::Vec3d& eye,
+                       const osg::Vec3d& step, unsigned frames, osg::NodeVisitor::DatabaseRequestHandler& pager,
+                       const osg::FrameStamp* frameStamp)
+{
+    if (frames == 0 || step.length2() == 0.0 || !frameStamp)
+        return 0;
+    const osg::Vec3d ahead = step * double(frames);
+    unsigned requested = 0;
+    for (const PagedNodeRecord& record : scene.pagedNodes)
+    {
+        const core::ObjectId id = record.placeholder;
+        auto* paged = dynamic_cast<osg::PagedLOD*>(scene.refs[id].paged.get());
+        // note: a visible one is entered, and asks for itself at its own priority
+        if (!paged || visible.test(id) || paged->getNumChildren() != 0 || paged->getNumFileNames() == 0 ||
+            !segmentMeetsBox(eye, ahead, scene.scene.objects[id].bounds))
+            continue;
+        osg::NodePath path = scene.refs[id].path; // ends at the node the tile merges into
+        pager.requestNodeFile(tileFile(*paged, 0), path, -1.0f, frameStamp, paged->getDatabaseRequest(0),
+                              paged->getDatabaseOptions());
+        ++requested;
+    }
+    return requested;
 }
 } // namespace osgVis

@@ -11,6 +11,7 @@
 #include <osgVis/core/scene/VisibleSet.h>
 
 #include <osg/FrameStamp>
+#include <osg/NodeVisitor>
 
 #include <vector>
 
@@ -20,6 +21,7 @@ struct PagingFigures
 {
     unsigned deferred = 0; ///< visible paged nodes with nothing loaded, not entered this frame (over the budget)
     unsigned keptFresh = 0; ///< hidden loaded paged nodes whose time stamps were renewed
+    unsigned prefetched = 0; ///< paged nodes requested ahead of the eye (prefetchAhead)
 };
 
 // `rootToEye`, `projection`: the view's matrices (OSG's row-vector convention). `lastVisible`: per
@@ -31,4 +33,10 @@ PagingFigures applyPagingPolicy(const PagingOptions& options, const ExtractedSce
                                 const osg::Matrixd& rootToEye, const osg::Matrixd& projection,
                                 const osg::FrameStamp* frameStamp, std::size_t residentBudget,
                                 std::vector<unsigned>& lastVisible);
+// Prefetch: asks `pager` (at priority -1, below any visible tile) for each PagedLOD with nothing
+// loaded that this frame's traversal will not enter (`visible` says it is hidden) and whose
+// placeholder box the segment from `eye` to eye + frames·step crosses; returns how many.
+unsigned prefetchAhead(const ExtractedScene& scene, const core::VisibleSet& visible, const osg::Vec3d& eye,
+                       const osg::Vec3d& step, unsigned frames, osg::NodeVisitor::DatabaseRequestHandler& pager,
+                       const osg::FrameStamp* frameStamp);
 } // namespace osgVis

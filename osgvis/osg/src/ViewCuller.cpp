@@ -32,6 +32,8 @@ struct ViewCuller::PerView
     core::BackOff backOff;
     std::chrono::steady_clock::time_point previousCull{}; // when this view last culled
     std::vector<unsigned> placeholderLastVisible; // per object id: the frame this view last saw a paged node
+    osg::Vec3d previousEye;                        // in the root's frame, at previousFrame
+    unsigned previousFrame = ~0u;
 
     ~PerView() { async.reset(); }
 };
@@ -270,6 +272,16 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
                                                               residentBudget, view->placeholderLastVisible);
         figures.pagedNodesDeferred = pagingFigures.deferred;
         figures.pagedNodesKeptFresh = pagingFigures.keptFresh;
+        // The eye's last step, per frame, extrapolated for the prefetch.
+        const osg::Vec3d eye = osg::Matrixd::inverse(modelView).getTrans();
+        const unsigned frame = frameStamp ? frameStamp->getFrameNumber() : 0u;
+        if (osg::NodeVisitor::DatabaseRequestHandler* handler = cv.getDatabaseRequestHandler();
+            handler && view->previousFrame != ~0u && frame > view->previousFrame && !scene->pagedNodes.empty())
+            figures.pagedNodesPrefetched =
+                prefetchAhead(*scene, view->visible, eye, (eye - view->previousEye) / double(frame - view->previousFrame),
+                              paging.prefetchFrames, *handler, frameStamp);
+        view->previousEye = eye;
+        view->previousFrame = frame;
     }
     const auto end = std::chrono::steady_clock::now();
     if (debugLock.owns_lock())
