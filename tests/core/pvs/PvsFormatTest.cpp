@@ -406,7 +406,7 @@ TEST(PvsFormat, KnownSectionsComeOnceInOrderWithTheirFlags)
 
     const std::vector<std::uint8_t> twice = osgVis::test::withSection(bytes, "GEOM", 1, {0, 0, 0, 0, 0, 0, 0, 0}, "");
     EXPECT_EQ(decodeError(twice), "section 'GEOM' (geometry fingerprint) at byte " + std::to_string(bytes.size() - 4) +
-                                      " out of order or repeated (version 2 stores HEAD, BILD, GEOM, CPDT, CPRG, VCEL in "
+                                      " out of order or repeated (version 2 stores HEAD, BILD, GEOM, CPDT, CPRG, TILE, VCEL in "
                                       "this order, each at most once)");
     std::vector<std::uint8_t> optional = bytes;
     const std::size_t build = sectionBody(bytes, "BILD") - 16;

@@ -178,6 +178,10 @@ CellPortalBakePlan::CellPortalBakePlan(const Scene& scene, const BakeOptions& op
     for (const SceneObject& object : scene.objects)
         _context->bounds[object.id] = object.bounds;
     _skeleton.sources.assign(cellCount(), placeholderSource(cellCount(), _skeleton.objectCount));
+    // Only the whole database can stand for every load state (docs/paging.md); a bake of some tiles
+    // is tied to exactly those by its fingerprint, as for any scene.
+    if (scene.tiles && scene.tiles->complete)
+        _skeleton.tiles = scene.tiles;
 }
 
 CellPortalBakePlan::~CellPortalBakePlan() = default;
@@ -211,6 +215,9 @@ std::vector<SourceCellVisibility> CellPortalBakePlan::bakeSources(std::size_t fi
     const int threads = _options.threads == 0 ? tbb::this_task_arena::max_concurrency() : int(_options.threads);
     tbb::task_arena arena(threads);
     arena.execute([&] { tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1), searchCells); });
+    if (_skeleton.tiles)
+        for (SourceCellVisibility& source : sources)
+            propagateToPlaceholders(*_skeleton.tiles, source.cellToObject);
     return sources;
 }
 

@@ -34,6 +34,10 @@ void registerBakedCellPortalData(std::shared_ptr<const CellPortalData> data)
     if (!data)
         return;
     const std::uint64_t fingerprint = data->fingerprint; // read before the move below
+    // A bake of a whole paged database is also found by its root file's objects, which every
+    // load state of the database shares (CellPortalModule::setScene maps the rest).
+    if (data->tiles)
+        BakedDataStore<CellPortalData>::instance().put(data->tiles->rootFingerprint, data);
     BakedDataStore<CellPortalData>::instance().put(fingerprint, std::move(data));
 }
 
@@ -49,6 +53,11 @@ struct CellPortalModule::Impl
     std::shared_ptr<const CellPortalData> given;
     std::shared_ptr<const CellPortalData> data;
     bool bakedOnTheSpot = false;
+    // With data baked on a whole paged database and a scene with some of its tiles: each cell's
+    // PVS in this scene's ids (data's own sets index the bake's objects).
+    bool tiled = false;
+    std::vector<VisibleSet> tiledPvs;
+    std::string tiledRefusal;
     CellObjects objects;
     std::vector<Aabb> objectBounds;
     double tolerance = 0.0;
@@ -75,6 +84,35 @@ struct CellPortalModule::Impl
     {
         return candidate.fingerprint == fingerprint && candidate.objectCount == scene.objects.size() &&
                candidate.sources.size() == candidate.graph.cells.size();
+    }
+
+    // Data baked on the whole database serve a scene with any of its tiles loaded when the root's
+    // objects and every loaded tile's equal the bake's: the bake's sets, moved to this scene's ids.
+    bool mapTiled(const CellPortalData& candidate, const Scene& scene)
+    {
+        if (!candidate.tiles || !scene.tiles || candidate.sources.size() != candidate.graph.cells.size())
+            return false;
+        std::vector<ObjectId> bakedOf;
+        if (!mapToBakedObjects(*candidate.tiles, *scene.tiles, bakedOf, tiledRefusal))
+            return false;
+        std::vector<ObjectId> currentOf(candidate.objectCount, InvalidObject);
+        for (ObjectId id = 0; id < bakedOf.size(); ++id)
+            if (bakedOf[id] < currentOf.size())
+                currentOf[bakedOf[id]] = id;
+        tiledPvs.resize(candidate.sources.size());
+        for (std::size_t cell = 0; cell < candidate.sources.size(); ++cell)
+        {
+            tiledPvs[cell].reset(scene.objects.size());
+            for (ObjectId baked : candidate.sources[cell].cellToObject.ids())
+                if (baked < currentOf.size() && currentOf[baked] != InvalidObject)
+                    tiledPvs[cell].set(currentOf[baked]);
+        }
+        return true;
+    }
+
+    const VisibleSet& pvsOf(std::uint32_t cell) const
+    {
+        return tiled ? tiledPvs[cell] : data->sources[cell].cellToObject;
     }
 
     const SourceCache& cacheFor(std::uint32_t cell, std::size_t slot)
@@ -132,7 +170,7 @@ struct CellPortalModule::Impl
         const bool objectsToo = stage == CellPortalStage::EyeToObject;
         sequence.clear();
         if (objectsToo)
-            keepSeenObjects(eye, source, visibility.cellToObject);
+            keepSeenObjects(eye, source, pvsOf(source));
         else
             keepCellObjects(source);
         recordCell(source, NodeState::Visible, 0);
@@ -152,7 +190,7 @@ struct CellPortalModule::Impl
                                                    cache.portals[i].rect.corner(2), cache.portals[i].rect.corner(3)});
             recordCell(tree[i].cell, NodeState::Visible, depth);
             if (objectsToo)
-                keepSeenObjects(eye, tree[i].cell, visibility.cellToObject);
+                keepSeenObjects(eye, tree[i].cell, pvsOf(source));
             else
                 keepCellObjects(tree[i].cell);
             ++i;
@@ -176,7 +214,7 @@ struct CellPortalModule::Impl
             return;
         }
         // The PVS, also where the stab tree is incomplete (the search hit its budget).
-        for (ObjectId id : visibility.cellToObject.ids())
+        for (ObjectId id : pvsOf(source).ids())
             kept.set(id);
     }
 };
@@ -197,6 +235,10 @@ std::shared_ptr<const CellPortalData> CellPortalModule::bakedData() const { retu
 
 bool CellPortalModule::bakedOnTheSpot() const { return _impl->bakedOnTheSpot; }
 
+bool CellPortalModule::usesTiledBake() const { return _impl->tiled; }
+
+const std::string& CellPortalModule::tiledBakeRefusal() const { return _impl->tiledRefusal; }
+
 void CellPortalModule::setDebugRecord(DebugRecord* record) { _impl->record = record; }
 
 void CellPortalModule::setScene(const Scene& scene)
@@ -205,10 +247,19 @@ void CellPortalModule::setScene(const Scene& scene)
     Impl& impl = *_impl;
     const std::uint64_t fingerprint = sceneFingerprint(scene);
     impl.data = nullptr;
+    impl.tiled = false;
+    impl.tiledPvs.clear();
+    impl.tiledRefusal.clear();
     if (impl.given && impl.usable(*impl.given, scene, fingerprint))
         impl.data = impl.given;
     else if (auto registered = findBakedCellPortalData(fingerprint); registered && impl.usable(*registered, scene, fingerprint))
         impl.data = std::move(registered);
+    else if (impl.given && impl.mapTiled(*impl.given, scene))
+        impl.data = impl.given;
+    else if (auto whole = scene.tiles ? findBakedCellPortalData(scene.tiles->rootFingerprint) : nullptr;
+             whole && impl.mapTiled(*whole, scene))
+        impl.data = std::move(whole);
+    impl.tiled = !impl.tiledPvs.empty();
     impl.bakedOnTheSpot = !impl.data;
     if (!impl.data)
     {
@@ -275,7 +326,7 @@ void CellPortalModule::cullRegion(const ViewRegion& region, VisibleSet& visible)
     for (ObjectId id : impl.objects.everywhere)
         impl.kept.set(id);
     for (std::uint32_t cell : impl.eyeCells)
-        for (ObjectId id : impl.data->sources[cell].cellToObject.ids())
+        for (ObjectId id : impl.pvsOf(cell).ids())
             impl.kept.set(id);
     visible.intersectWith(impl.kept);
 }

@@ -2,6 +2,7 @@
 #include <osgVis/core/pvs/CellPortalMerge.h>
 
 #include "PvsCellPortalCodec.h"
+#include "PvsTileCodec.h"
 #include "RangeMergeChecks.h"
 
 #include <algorithm>
@@ -11,14 +12,17 @@ namespace osgVis::core
 {
 namespace
 {
-// The subdivision's bytes as the file stores them (sources and statistics left out): two bakes
-// share a subdivision exactly when these agree.
+// The subdivision's bytes as the file stores them (sources and statistics left out), and its tile
+// keys where it has them: two bakes share a subdivision exactly when these agree.
 std::vector<std::uint8_t> graphBytes(const PvsFile& file)
 {
     CellPortalData graphOnly;
     graphOnly.graph = file.data.graph;
     PvsByteWriter out;
     writeCellPortalParts(out, graphOnly);
+    out.u8(file.data.tiles ? 1 : 0);
+    if (file.data.tiles)
+        writeTiles(out, *file.data.tiles);
     return std::move(out.bytes());
 }
 

@@ -6,6 +6,7 @@
 #include "Checksum.h"
 #include "PvsCellPortalCodec.h"
 #include "PvsSections.h"
+#include "PvsTileCodec.h"
 #include "PvsViewCellCodec.h"
 
 #include <algorithm>
@@ -30,6 +31,7 @@ constexpr PvsTag BuildTag{"BILD", "build identity"};
 constexpr PvsTag GeometryTag{"GEOM", "geometry fingerprint"};
 constexpr PvsTag CellPortalTag{"CPDT", "cell-portal data"};
 constexpr PvsTag SourceRangeTag{"CPRG", "cell-portal source range"};
+constexpr PvsTag TileTag{"TILE", "tile keys"};
 constexpr PvsTag ViewCellTag{"VCEL", "view cells"};
 
 // The writer refuses what the reader would refuse, so a bake bug shows when saving, not loading;
@@ -49,6 +51,12 @@ void checkEncodable(const PvsFile& file)
         if (!(first < end && end <= d.sources.size()))
             throw PvsFormatError("cannot encode .pvs: source range " + std::to_string(first) + ":" +
                                  std::to_string(end) + " outside the " + std::to_string(d.sources.size()) + " cells");
+    }
+    if (d.tiles)
+    {
+        if (!file.hasCellPortal)
+            throw PvsFormatError("cannot encode .pvs: tile keys without cell-portal data");
+        checkTilesEncodable(*d.tiles, d.objectCount);
     }
     const ViewCellPvs& v = file.viewCells;
     if (file.hasViewCells)
@@ -120,6 +128,14 @@ void readSourceRangeSection(PvsByteReader& s, PvsFile& file)
     file.sourceRange = std::make_pair(first, end);
 }
 
+// After CPDT: the tile of each object of a bake on a whole paged database.
+void readTileSection(PvsByteReader& s, PvsFile& file)
+{
+    if (!file.hasCellPortal)
+        s.fail("tile keys without cell-portal data");
+    file.data.tiles = std::make_shared<const SceneTiles>(readTiles(s, file.data.objectCount));
+}
+
 void readViewCellSection(PvsByteReader& s, PvsFile& file)
 {
     file.viewCells = readViewCells(s, file.data.objectCount);
@@ -140,6 +156,7 @@ const KnownSection KnownSections[] = {
     {GeometryTag, true, false, readGeometryFingerprint},
     {CellPortalTag, false, true, readCellPortalSection},
     {SourceRangeTag, false, false, readSourceRangeSection},
+    {TileTag, false, false, readTileSection},
     {ViewCellTag, false, false, readViewCellSection},
 };
 constexpr std::size_t KnownSectionCount = std::size(KnownSections);
@@ -198,7 +215,7 @@ PvsFile readSectionsVersion2(PvsByteReader& in, bool complete)
                                  hex(flags) + " where " + hex(SectionRequired) + " is expected");
         if (k < next)
             throw PvsFormatError(sectionText(known.tag) + " at byte " + std::to_string(at) +
-                                 " out of order or repeated (version 2 stores HEAD, BILD, GEOM, CPDT, CPRG, VCEL in this "
+                                 " out of order or repeated (version 2 stores HEAD, BILD, GEOM, CPDT, CPRG, TILE, VCEL in this "
                                  "order, each at most once)");
         requirePresent(next, k, "before byte " + std::to_string(at));
         in.setContext(known.tag.name);
@@ -260,6 +277,8 @@ std::vector<std::uint8_t> encodePvs(const PvsFile& file)
                          out.u32(file.sourceRange->first);
                          out.u32(file.sourceRange->second);
                      });
+    if (file.data.tiles)
+        writeSection(out, TileTag, [&] { writeTiles(out, *file.data.tiles); });
     if (file.hasViewCells)
         writeSection(out, ViewCellTag, [&] { writeViewCells(out, file.viewCells); });
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/core/scene/SceneFingerprint.h>
+#include <osgVis/core/scene/SceneTiles.h>
 
 #include <algorithm>
 #include <cmath>
@@ -76,6 +77,17 @@ struct VertexGrid
         return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::clamp(steps, -Limit, Limit)));
     }
 };
+
+void addObject(Fnv1a& hash, const SceneObject& object)
+{
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        hash.add(object.bounds.min[axis]);
+        hash.add(object.bounds.max[axis]);
+    }
+    hash.add(std::uint64_t(object.triangleCount));
+    hash.add(std::uint64_t(object.flags & FingerprintFlags));
+}
 } // namespace
 
 std::uint64_t sceneFingerprint(const Scene& scene)
@@ -83,15 +95,20 @@ std::uint64_t sceneFingerprint(const Scene& scene)
     Fnv1a hash;
     hash.add(std::uint64_t(scene.objects.size()));
     for (const SceneObject& object : scene.objects)
-    {
-        for (int axis = 0; axis < 3; ++axis)
-        {
-            hash.add(object.bounds.min[axis]);
-            hash.add(object.bounds.max[axis]);
-        }
-        hash.add(std::uint64_t(object.triangleCount));
-        hash.add(std::uint64_t(object.flags & FingerprintFlags));
-    }
+        addObject(hash, object);
+    return hash.value();
+}
+
+std::uint64_t tileFingerprint(const Scene& scene, const SceneTiles& tiles, std::uint32_t tile)
+{
+    std::uint64_t count = 0;
+    for (const TileKey& key : tiles.keys)
+        count += key.tile == tile;
+    Fnv1a hash;
+    hash.add(count);
+    for (std::size_t id = 0; id < tiles.keys.size() && id < scene.objects.size(); ++id)
+        if (tiles.keys[id].tile == tile)
+            addObject(hash, scene.objects[id]);
     return hash.value();
 }
 

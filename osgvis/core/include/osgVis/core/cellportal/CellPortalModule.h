@@ -14,6 +14,7 @@
 #include <osgVis/core/module/VisibilityModule.h>
 
 #include <memory>
+#include <string>
 
 namespace osgVis::core
 {
@@ -45,6 +46,11 @@ public:
     std::shared_ptr<const CellPortalData> bakedData() const;
     /// True when the last setScene baked on the spot (no registered data matched the scene).
     bool bakedOnTheSpot() const;
+    /// True when the last setScene took data baked on the whole paged database the scene loads part
+    /// of (CellPortalData::tiles), mapped to its objects by tile.
+    bool usesTiledBake() const;
+    /// Why such data did not serve the last scene (empty when none was tried or it did).
+    const std::string& tiledBakeRefusal() const;
 
 private:
     struct Impl;
@@ -52,7 +58,9 @@ private:
 };
 
 /// Process-wide store of baked data by scene fingerprint: the `.pvs` reader registers what it loaded
-/// so that any CellPortalModule later given that scene uses it. Thread-safe.
+/// so that any CellPortalModule later given that scene uses it. Data baked on a whole paged database
+/// are also stored by its root file's objects (SceneTiles::rootFingerprint), so that a scene with
+/// any of its tiles loaded finds them. Thread-safe.
 void registerBakedCellPortalData(std::shared_ptr<const CellPortalData> data);
 std::shared_ptr<const CellPortalData> findBakedCellPortalData(std::uint64_t fingerprint);
 } // namespace osgVis::core

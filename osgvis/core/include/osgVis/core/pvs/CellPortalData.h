@@ -9,6 +9,7 @@
 #include <osgVis/core/scene/VisibleSet.h>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace osgVis::core
@@ -52,6 +53,9 @@ struct CellPortalData
     CellGraph graph;
     std::vector<SourceCellVisibility> sources; ///< one per cell
     BakeStatistics statistics;
+    /// Set when baked on a complete paged database (Scene::tiles): its objects' tile keys, so that
+    /// the data serve a scene with any tiles loaded (mapToBakedObjects). Null otherwise.
+    std::shared_ptr<const SceneTiles> tiles;
 };
 
 /// The figures of `data`'s cells, portals and sources (everything but `statistics` itself), as the

@@ -7,6 +7,7 @@
 #include <osgVis/core/geometry/ConvexPolygon.h>
 #include <osgVis/core/geometry/WingedEdgeMesh.h>
 #include <osgVis/core/scene/NamedAttributes.h>
+#include <osgVis/core/scene/SceneTiles.h>
 #include <osgVis/core/scene/TraversalHierarchy.h>
 
 #include <cstdint>
@@ -95,6 +96,8 @@ struct Scene
     /// Connectivity a renderer supplied, per object (checked, not trusted: WingedEdgeMesh::closed).
     std::unordered_map<ObjectId, WingedEdgeMesh> meshes;
     NamedAttributes attributes;
+    /// For a paged database: the tile each object came from (null for a scene that pages nothing).
+    std::shared_ptr<const SceneTiles> tiles;
 
     Aabb bounds() const;
     std::uint64_t totalTriangles() const;

@@ -8,6 +8,8 @@
 
 namespace osgVis::core
 {
+struct SceneTiles;
+
 /// Identifies a model for its baked data: FNV-1a 64 over the object count and, per object, its
 /// bounds, triangle count and static flags (DYNAMIC, TRANSPARENT, ALWAYS_VISIBLE, NO_AUTO_OCCLUDER,
 /// CULL_*). Triangles are not hashed, so an extraction without them fingerprints the same.
@@ -22,4 +24,8 @@ std::uint64_t sceneFingerprint(const Scene& scene);
 /// throws std::invalid_argument when an object's triangles are not in scene.triangles (a scene
 /// extracted without them). docs/pvs-format.md says why this grid.
 std::uint64_t sceneGeometryFingerprint(const Scene& scene);
+
+/// sceneFingerprint's fields of one tile's objects (SceneTiles.h), in id order, after their count:
+/// equal for a tile loaded again whatever else is loaded and whatever ids its objects got.
+std::uint64_t tileFingerprint(const Scene& scene, const SceneTiles& tiles, std::uint32_t tile);
 } // namespace osgVis::core
