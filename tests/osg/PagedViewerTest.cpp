@@ -11,11 +11,15 @@
 #include "TestScenes.h"
 
 #include <osgVis/CullVisitor>
+#include <osgVis/PagedDatabase>
+#include <osgVis/SceneExtractor>
+#include <osgVis/ViewCuller>
 #include <osgVis/Statistics>
 #include <osgVis/VisibilityGroup>
 
 #include <osgVis/gen/Generator.h>
 #include <osgVis/gen/PagedScene.h>
+#include <osgVis/core/cellportal/CellPortalModule.h>
 
 #include <osg/Geode>
 #include <osg/Notify>
@@ -27,6 +31,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -382,59 +387,127 @@ TEST(PagedViewer, HiddenTilesSeenLatelyAreKeptFreshWithinThePagersBudget)
     }
 }
 
-TEST(PagedViewer, GeneratedPagedCityDrawsThePlainPixelsOnceLoadingSettles)
+namespace
 {
-    const std::filesystem::path dir = tileDirectory() / "city";
+// A generated scene written as a paged database, and views at four keys of its walk.
+struct GeneratedDatabase
+{
+    std::string rootFile;
+    std::vector<osg::Matrixd> views;
+};
+
+GeneratedDatabase generatedDatabase(osgVis::gen::SceneKind kind, std::uint64_t triangles, unsigned tiles,
+                                    const std::string& name)
+{
+    const std::filesystem::path dir = tileDirectory() / name;
     std::filesystem::create_directories(dir);
     osgVis::gen::GenerateOptions generate;
-    generate.kind = osgVis::gen::SceneKind::City;
-    generate.triangles = 20000;
-    const osgVis::gen::GeneratedScene city = osgVis::gen::generate(generate);
+    generate.kind = kind;
+    generate.triangles = triangles;
+    const osgVis::gen::GeneratedScene scene = osgVis::gen::generate(generate);
     osgVis::gen::PagedOptions paging;
-    paging.tiles = 24;
-    const std::string rootFile = osgVis::gen::writePagedScene(*city.root, dir.string(), paging).rootPath;
-
-    // Settled: the pager has had nothing in progress for the last frames.
-    osgDB::DatabasePager* pager = nullptr;
-    const auto settled = [&, quiet = 0]() mutable {
-        quiet = pager && !pager->getRequestsInProgress() ? quiet + 1 : 0;
-        return quiet >= 3;
-    };
-    const auto step = [&](std::size_t key) {
-        const osgVis::core::Mat4 m = city.walk.keys[key].viewMatrix();
-        osg::Matrixd view;
-        view.set(&m[0][0]);
-        return Step{view, settled, [&](osgDB::DatabasePager& p) { pager = &p; }};
-    };
-    std::vector<std::size_t> keys;
-    for (std::size_t k = 0; k < city.walk.keys.size(); k += city.walk.keys.size() / 4)
-        keys.push_back(k);
-
-    osg::ref_ptr<osg::Node> plain = osgDB::readRefNodeFile(rootFile);
-    ASSERT_TRUE(plain.valid());
-    std::vector<Outcome> reference;
-    for (std::size_t key : keys)
+    paging.tiles = tiles;
+    GeneratedDatabase database;
+    database.rootFile = osgVis::gen::writePagedScene(*scene.root, dir.string(), paging).rootPath;
+    for (std::size_t k = 0; k < scene.walk.keys.size(); k += scene.walk.keys.size() / 4)
     {
-        reference.push_back(run(plain.get(), osgViewer::ViewerBase::SingleThreaded, {step(key)}));
-        if (!reference.back().image || !reference.back().image->data())
-            GTEST_SKIP() << "no GL context (run under xvfb-run)";
-        ASSERT_TRUE(reference.back().settled);
+        const osgVis::core::Mat4 m = scene.walk.keys[k].viewMatrix();
+        database.views.emplace_back();
+        database.views.back().set(&m[0][0]);
     }
-    for (const char* modes : {"octree", "mask", "cdt", "frustum+octree"})
+    return database;
+}
+
+// One run per view, each until the pager has had nothing in progress for the last frames.
+std::vector<Outcome> runSettled(osg::Node* root, const std::vector<osg::Matrixd>& views)
+{
+    std::vector<Outcome> outcomes;
+    for (const osg::Matrixd& view : views)
     {
-        SCOPED_TRACE(modes);
-        osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup(modes);
-        group->addChild(osgDB::readRefNodeFile(rootFile));
-        double skipped = 0;
-        for (std::size_t i = 0; i < keys.size(); ++i)
+        osgDB::DatabasePager* pager = nullptr;
+        const auto settled = [&, quiet = 0]() mutable
         {
-            const Outcome outcome = run(group.get(), osgViewer::ViewerBase::SingleThreaded, {step(keys[i])});
-            ASSERT_TRUE(outcome.settled);
-            EXPECT_TRUE(samePixels(*reference[i].image, *outcome.image)) << "view " << keys[i];
-            skipped += outcome.skipped;
-        }
-        EXPECT_GT(skipped, 0.0); // some tile was left unrequested, or the comparison proves little
+            quiet = pager && !pager->getRequestsInProgress() ? quiet + 1 : 0;
+            return quiet >= 3;
+        };
+        outcomes.push_back(run(root, osgViewer::ViewerBase::SingleThreaded,
+                               {Step{view, settled, [&](osgDB::DatabasePager& p) { pager = &p; }}}));
     }
+    return outcomes;
+}
+
+bool haveImages(const std::vector<Outcome>& outcomes)
+{
+    return std::all_of(outcomes.begin(), outcomes.end(),
+                       [](const Outcome& o) { return o.image && o.image->data() && o.settled; });
+}
+
+// A group of `modes` over a fresh read of the database.
+osg::ref_ptr<osgVis::VisibilityGroup> groupOver(const std::string& modes, const std::string& rootFile)
+{
+    osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup(modes);
+    group->addChild(osgDB::readRefNodeFile(rootFile));
+    return group;
+}
+
+// `group` draws `reference`'s pixels at every view once loading settles; returns how many paged
+// nodes it skipped, summed over the views' last frames.
+double expectPlainPixels(osgVis::VisibilityGroup& group, const std::vector<osg::Matrixd>& views,
+                         const std::vector<Outcome>& reference)
+{
+    SCOPED_TRACE(group.getModes());
+    const std::vector<Outcome> outcomes = runSettled(&group, views);
+    double skipped = 0;
+    for (std::size_t i = 0; i < views.size(); ++i)
+    {
+        EXPECT_TRUE(outcomes[i].settled) << "view " << i;
+        EXPECT_TRUE(outcomes[i].image && samePixels(*reference[i].image, *outcomes[i].image)) << "view " << i;
+        skipped += outcomes[i].skipped;
+    }
+    return skipped;
+}
+} // namespace
+
+TEST(PagedViewer, GeneratedPagedCityDrawsThePlainPixelsOnceLoadingSettles)
+{
+    const GeneratedDatabase city = generatedDatabase(osgVis::gen::SceneKind::City, 20000, 24, "city");
+    osg::ref_ptr<osg::Node> plain = osgDB::readRefNodeFile(city.rootFile);
+    ASSERT_TRUE(plain.valid());
+    const std::vector<Outcome> reference = runSettled(plain.get(), city.views);
+    if (!reference[0].image || !reference[0].image->data())
+        GTEST_SKIP() << "no GL context (run under xvfb-run)";
+    ASSERT_TRUE(haveImages(reference));
+    for (const char* modes : {"octree", "mask", "cdt", "frustum+octree"})
+        // some tile was left unrequested, or the comparison proves little
+        EXPECT_GT(expectPlainPixels(*groupOver(modes, city.rootFile), city.views, reference), 0.0) << modes;
+}
+
+// cellportal with data baked on the whole database (docs/paging.md): every load state uses them,
+// none bakes on the spot, and the pixels are plain OSG's once loading settles.
+TEST(PagedViewer, PagedFloorWithAWholeDatabaseBakeDrawsThePlainPixels)
+{
+    const GeneratedDatabase floor = generatedDatabase(osgVis::gen::SceneKind::Floor, 60000, 24, "floor");
+    {
+        osg::ref_ptr<osg::Node> whole = osgDB::readRefNodeFile(floor.rootFile);
+        ASSERT_TRUE(whole.valid());
+        ASSERT_TRUE(osgVis::loadWholeDatabase(*whole).unreadable.empty());
+        const osg::ref_ptr<osgVis::ExtractedScene> extracted = osgVis::extractScene(*whole);
+        auto data = std::make_shared<const osgVis::core::CellPortalData>(osgVis::core::bakeCellPortal(extracted->scene));
+        ASSERT_TRUE(data->tiles);
+        osgVis::core::registerBakedCellPortalData(data);
+    }
+    osg::ref_ptr<osg::Node> plain = osgDB::readRefNodeFile(floor.rootFile);
+    const std::vector<Outcome> reference = runSettled(plain.get(), floor.views);
+    if (!reference[0].image || !reference[0].image->data())
+        GTEST_SKIP() << "no GL context (run under xvfb-run)";
+    ASSERT_TRUE(haveImages(reference));
+    const osg::ref_ptr<osgVis::VisibilityGroup> group = groupOver("cellportal", floor.rootFile);
+    EXPECT_GT(expectPlainPixels(*group, floor.views, reference), 0.0);
+    // The last scene the group extracted found the whole bake: an on-the-spot bake would have been
+    // registered under that scene's own fingerprint, without tile keys.
+    const osg::ref_ptr<const osgVis::ExtractedScene> scene = group->getViewCuller()->getScene();
+    const auto found = osgVis::core::findBakedCellPortalData(osgVis::core::sceneFingerprint(scene->scene));
+    EXPECT_TRUE(!found || found->tiles);
 }
 
 TEST(PagedViewer, OsgVisCullVisitorSkipsHiddenTilesToo)

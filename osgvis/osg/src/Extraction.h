@@ -18,6 +18,12 @@ void extractBelow(ExtractedScene& out, const osg::NodePath& prefix, osg::Node& c
 bool boundStated(const osg::Group& node);
 bool boundCoversAllChildren(const osg::Group& node);
 std::string tileFile(const osg::Group& node, unsigned child);
+// How many children the node names files for (PagedLOD, ProxyNode; 0 for other groups).
+unsigned pagedFileCount(const osg::Group& node);
+// Sets out.scene.tiles from the objects' paths (null when no paged node was met, or when two paged
+// nodes load the same file, which no key could tell apart): what a bake on the whole database
+// records and what maps it onto a scene with some tiles loaded (docs/paging.md).
+void assignTileKeys(ExtractedScene& out);
 // Flags the placeholder always visible, and lists the tile in out.oversizedTiles, when an object of
 // ids [from, end) below it (its paths hold the paged node at `depth`) reaches outside its box.
 void checkWithinStatedBound(ExtractedScene& out, core::ObjectId placeholder, std::size_t depth, core::ObjectId from);

@@ -139,6 +139,7 @@ osg::ref_ptr<ExtractedScene> updatePagedScene(const ExtractedScene& previous, co
         out->changes.push_back({core::SceneChange::Kind::Inserted, inserted});
     warnOversizedTiles(*out, &previous);
     out->replaces = &previous;
+    assignTileKeys(*out);
     return out;
 }
 } // namespace osgVis

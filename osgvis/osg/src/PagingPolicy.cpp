@@ -160,8 +160,8 @@ PagingFigures applyPagingPolicy(const PagingOptions& options, const ExtractedSce
     return figures;
 }
 unsigned prefetchAhead(const ExtractedScene& scene, const core::VisibleSet& visible, const osg::Vec3d& eye,
-                       const osg::Vec3d& step, unsigned frames, osg::NodeVisitor::DatabaseRequestHandler& pager,
-                       const osg::FrameStamp* frameStamp)
+                       const osg::Vec3d& step, unsigned frames, const core::VisibleSet* seenAhead,
+                       osg::NodeVisitor::DatabaseRequestHandler& pager, const osg::FrameStamp* frameStamp)
 {
     if (frames == 0 || step.length2() == 0.0 || !frameStamp)
         return 0;
@@ -173,7 +173,7 @@ unsigned prefetchAhead(const ExtractedScene& scene, const core::VisibleSet& visi
         auto* paged = dynamic_cast<osg::PagedLOD*>(scene.refs[id].paged.get());
         // note: a visible one is entered, and asks for itself at its own priority
         if (!paged || visible.test(id) || paged->getNumChildren() != 0 || paged->getNumFileNames() == 0 ||
-            !segmentMeetsBox(eye, ahead, scene.scene.objects[id].bounds))
+            !((seenAhead && seenAhead->test(id)) || segmentMeetsBox(eye, ahead, scene.scene.objects[id].bounds)))
             continue;
         osg::NodePath path = scene.refs[id].path; // ends at the node the tile merges into
         pager.requestNodeFile(tileFile(*paged, 0), path, -1.0f, frameStamp, paged->getDatabaseRequest(0),

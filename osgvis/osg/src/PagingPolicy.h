@@ -35,8 +35,10 @@ PagingFigures applyPagingPolicy(const PagingOptions& options, const ExtractedSce
                                 std::vector<unsigned>& lastVisible);
 // Prefetch: asks `pager` (at priority -1, below any visible tile) for each PagedLOD with nothing
 // loaded that this frame's traversal will not enter (`visible` says it is hidden) and whose
-// placeholder box the segment from `eye` to eye + frames·step crosses; returns how many.
+// placeholder box the segment from `eye` to eye + frames·step crosses, or which `seenAhead` (may be
+// null: what the chain's region query finds visible from some eye near that segment) holds;
+// returns how many.
 unsigned prefetchAhead(const ExtractedScene& scene, const core::VisibleSet& visible, const osg::Vec3d& eye,
-                       const osg::Vec3d& step, unsigned frames, osg::NodeVisitor::DatabaseRequestHandler& pager,
-                       const osg::FrameStamp* frameStamp);
+                       const osg::Vec3d& step, unsigned frames, const core::VisibleSet* seenAhead,
+                       osg::NodeVisitor::DatabaseRequestHandler& pager, const osg::FrameStamp* frameStamp);
 } // namespace osgVis

@@ -162,6 +162,7 @@ osg::ref_ptr<ExtractedScene> reextractScene(osg::Node& root, const ExtractedScen
     addChange(out->changes, core::SceneChange::Kind::Moved, std::move(moved));
     addChange(out->changes, core::SceneChange::Kind::Inserted, std::move(inserted));
     out->replaces = &previous;
+    assignTileKeys(*out);
     return out;
 }
 } // namespace osgVis

@@ -253,13 +253,6 @@ bool plainCullCallback(const osg::Drawable& drawable)
     return own && !own->getChained();
 }
 
-unsigned fileCount(const osg::Group& node)
-{
-    if (const auto* paged = dynamic_cast<const osg::PagedLOD*>(&node))
-        return paged->getNumFileNames();
-    const auto* proxy = dynamic_cast<const osg::ProxyNode*>(&node);
-    return proxy ? proxy->getNumFileNames() : 0;
-}
 } // namespace
 
 namespace
@@ -291,9 +284,17 @@ bool boundStated(const osg::Group& node)
     return sphereStated(node) || boxStated(node, box);
 }
 
+unsigned pagedFileCount(const osg::Group& node)
+{
+    if (const auto* paged = dynamic_cast<const osg::PagedLOD*>(&node))
+        return paged->getNumFileNames();
+    const auto* proxy = dynamic_cast<const osg::ProxyNode*>(&node);
+    return proxy ? proxy->getNumFileNames() : 0;
+}
+
 bool boundCoversAllChildren(const osg::Group& node)
 {
-    return boundStated(node) || node.getNumChildren() >= fileCount(node);
+    return boundStated(node) || node.getNumChildren() >= pagedFileCount(node);
 }
 
 std::string tileFile(const osg::Group& node, unsigned child)
@@ -748,6 +749,7 @@ osg::ref_ptr<ExtractedScene> extractSceneQuietly(osg::Node& root, const Extracti
 {
     osg::ref_ptr<ExtractedScene> out = new ExtractedScene;
     Extractor(*out, options).run(root);
+    assignTileKeys(*out);
     return out;
 }
 

@@ -34,6 +34,7 @@ struct ViewCuller::PerView
     std::vector<unsigned> placeholderLastVisible; // per object id: the frame this view last saw a paged node
     osg::Vec3d previousEye;                        // in the root's frame, at previousFrame
     unsigned previousFrame = ~0u;
+    core::VisibleSet seenAhead; // the prefetch's region answer (regionSeenAhead)
 
     ~PerView() { async.reset(); }
 };
@@ -45,6 +46,25 @@ namespace
 core::Mat4 toCore(const osg::Matrixd& m)
 {
     return glm::make_mat4(m.ptr());
+}
+
+// For the prefetch: what some eye near the predicted path (eye to eye + ahead) may see, by the
+// chain's region query (a baked PVS of the cells ahead, for cellportal). Null when the chain answers
+// no regions, culls asynchronously (its regions are the worker's), or keeps everything, which says
+// nothing about what lies ahead.
+const core::VisibleSet* regionSeenAhead(core::ModuleChain& chain, bool async, const core::View& current,
+                                        const osg::Vec3d& eye, const osg::Vec3d& ahead, core::VisibleSet& out)
+{
+    if (async || !chain.supportsRegions())
+        return nullptr;
+    core::ViewRegion region;
+    region.eyes.expand(core::Vec3(eye.x(), eye.y(), eye.z()));
+    region.eyes.expand(core::Vec3(eye.x() + ahead.x(), eye.y() + ahead.y(), eye.z() + ahead.z()));
+    region.minNearDistance = core::nearDistance(current);
+    region.maxNearReach = core::nearPlaneReach(current);
+    out.reset(out.capacity(), true);
+    chain.cullRegion(region, out);
+    return out.count() == out.capacity() ? nullptr : &out;
 }
 
 // The core scene of an extraction, kept alive (with the extraction) for as long as the pointer.
@@ -277,9 +297,16 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         const unsigned frame = frameStamp ? frameStamp->getFrameNumber() : 0u;
         if (osg::NodeVisitor::DatabaseRequestHandler* handler = cv.getDatabaseRequestHandler();
             handler && view->previousFrame != ~0u && frame > view->previousFrame && !scene->pagedNodes.empty())
+        {
+            const osg::Vec3d step = (eye - view->previousEye) / double(frame - view->previousFrame);
+            view->seenAhead.reset(view->visible.capacity());
+            const core::VisibleSet* seenAhead =
+                paging.prefetchFrames != 0 ? regionSeenAhead(view->chain, view->async != nullptr, coreView, eye,
+                                                             step * double(paging.prefetchFrames), view->seenAhead)
+                                           : nullptr;
             figures.pagedNodesPrefetched =
-                prefetchAhead(*scene, view->visible, eye, (eye - view->previousEye) / double(frame - view->previousFrame),
-                              paging.prefetchFrames, *handler, frameStamp);
+                prefetchAhead(*scene, view->visible, eye, step, paging.prefetchFrames, seenAhead, *handler, frameStamp);
+        }
         view->previousEye = eye;
         view->previousFrame = frame;
     }
