@@ -13,6 +13,8 @@
 #include <osgVis/ClusterDraw>
 #include <osgVis/VisibilityGroup>
 #include <osgVis/oracle/IdBufferOracle.h>
+#include <osgVis/core/cellportal/CellPortalModule.h>
+#include <osgVis/core/pvs/PvsFormat.h>
 
 #include <osg/NodeVisitor>
 #include <osg/PagedLOD>
@@ -298,13 +300,34 @@ void writeJson(const std::string& path, const BenchOptions& options, const std::
     }
     out << "  ]\n}\n";
 }
+
+// `--scene DIR/x.pvs`: a cell-portal bake of the whole database (osgvispvs on its root file). Its
+// data are registered, where cellportal modes find them for every load state, and the root file it
+// names is what the bench pages; the plugin is not used, as it would put a culling group above it.
+BenchOptions withBakedDatabase(const BenchOptions& options)
+{
+    const std::string& file = options.sceneFile;
+    if (file.size() < 4 || file.compare(file.size() - 4, 4, ".pvs") != 0)
+        return options;
+    core::PvsFile pvs = core::readPvsFile(file);
+    if (!pvs.hasCellPortal || !pvs.data.tiles || pvs.sourceRange)
+        throw std::runtime_error("'" + file + "' holds no cell-portal bake of a whole paged database (osgvispvs " +
+                                 "DIR/root.osgb -o " + file + ")");
+    BenchOptions rooted = options;
+    const std::filesystem::path model(pvs.modelPath);
+    rooted.sceneFile =
+        (model.is_absolute() ? model : std::filesystem::path(file).parent_path() / model).lexically_normal().string();
+    core::registerBakedCellPortalData(std::make_shared<const core::CellPortalData>(std::move(pvs.data)));
+    return rooted;
+}
 } // namespace
 
-int runPagedBench(const BenchOptions& options, const std::vector<BenchMode>& modes, std::ostream& out)
+int runPagedBench(const BenchOptions& givenOptions, const std::vector<BenchMode>& modes, std::ostream& out)
 {
     for (const BenchMode& mode : modes)
         if (mode.kind != BenchMode::Kind::OsgDefault && mode.kind != BenchMode::Kind::ModuleChain)
             throw UsageError("--paged runs osg and module-chain modes; '" + mode.name + "' is neither");
+    const BenchOptions options = withBakedDatabase(givenOptions);
     const apps::LoadedScene scene = loadBenchScene(options);
     const core::Walk walk = subsampledWalk(scene.walk, options.views);
     const std::vector<BenchView> views = makeBenchViews(walk);

@@ -2,6 +2,7 @@
 #include "ToolFiles.h"
 
 #include <osgVis/ModelRepair>
+#include <osgVis/PagedDatabase>
 
 #include <osgDB/ReadFile>
 
@@ -51,6 +52,15 @@ LoadedModel loadModelToBake(const PvsToolOptions& o, bool workerRank)
     if (!loaded.model)
         throw ToolError("cannot read model '" + o.modelFile +
                         "' (not a model osgDB can read, or no plugin for its extension)");
+    // A paged database is baked whole, so that its data serve every load state (docs/paging.md).
+    const WholeDatabase whole = loadWholeDatabase(*loaded.model);
+    if (!whole.unreadable.empty())
+        throw ToolError("model '" + o.modelFile + "' is a paged database whose tile " + whole.unreadable.front() +
+                        (whole.unreadable.size() > 1 ? " (and " + std::to_string(whole.unreadable.size() - 1) + " more)"
+                                                     : std::string()) +
+                        " cannot be read: a bake needs every tile");
+    if (whole.tilesRead != 0 && !workerRank)
+        std::cerr << "model '" << o.modelFile << "': read " << whole.tilesRead << " paged tiles to bake the whole database\n";
     if (const std::string repaired = repairLoadedModel(*loaded.model, o.modelFile); !repaired.empty() && !workerRank)
         std::cerr << "model '" << o.modelFile << "': " << repaired << "\n";
     ExtractionOptions extraction;

@@ -22,6 +22,19 @@ std::string hex(std::uint64_t value)
 
 std::string mismatchWithModel(const core::PvsFile& pvs, osg::Node& model)
 {
+    // A bake of a whole paged database: the model is its root with whatever is loaded, each tile
+    // checked as it arrives (CellPortalModule); here the root's own objects must be the bake's.
+    if (pvs.data.tiles)
+    {
+        ExtractionOptions options;
+        options.keepTriangles = false;
+        const osg::ref_ptr<ExtractedScene> extracted = extractScene(model, options);
+        std::vector<core::ObjectId> bakedOf;
+        std::string why = "the model pages nothing";
+        if (extracted->scene.tiles && core::mapToBakedObjects(*pvs.data.tiles, *extracted->scene.tiles, bakedOf, why))
+            return "";
+        return "baked for another paged database (" + why + ")";
+    }
     // note: only the geometry fingerprint hashes triangles; without it the check skips collecting them.
     const bool geometry = pvs.geometryFingerprint != 0;
     ExtractionOptions options;

@@ -11,6 +11,7 @@
 #include <osgVis/core/cellportal/CellPortalBake.h>
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/gen/Generator.h>
+#include <osgVis/gen/PagedScene.h>
 
 #include <osgDB/WriteFile>
 
@@ -294,4 +295,37 @@ TEST(PvsTool, RefusesBadViewCellsNamingThem)
     expectFailure(quoted(model) + o + " --method portals", 2, "--method is cellportal or multifocal, got 'portals'");
     expectFailure(quoted(model) + o + " --method multifocal --grid 0,0,0,8,4,2 --cell-size 4,4,2 --cells 0:9", 1,
                   "--cells 0:9 reaches past the 2 view cells of this layout");
+}
+
+// A paged database is baked whole: every tile read first, the file keyed by tile so that it serves
+// any load state; a tile that cannot be read stops the bake, named.
+TEST(PvsTool, BakesAPagedDatabaseWholeAndRefusesOneWithAnUnreadableTile)
+{
+    const fs::path dir = scratchDirectory("apps", "PvsToolPaged");
+    osgVis::gen::GenerateOptions options;
+    options.kind = osgVis::gen::SceneKind::Office;
+    options.triangles = 4000;
+    osgVis::gen::PagedOptions paging;
+    paging.tiles = 6;
+    const osgVis::gen::PagedSummary paged =
+        osgVis::gen::writePagedScene(*osgVis::gen::generate(options).root, dir.string(), paging);
+    const AppRun run = osgvispvs(quoted(fs::path(paged.rootPath)) + " -o " + quoted(dir / "db.pvs"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("read " + std::to_string(paged.tiles) + " paged tiles to bake the whole database"),
+              std::string::npos)
+        << run.output;
+    const osgVis::core::PvsFile file = osgVis::core::readPvsFile((dir / "db.pvs").string());
+    ASSERT_TRUE(file.data.tiles);
+    EXPECT_EQ(file.data.tiles->files.size(), paged.tiles);
+    EXPECT_EQ(file.modelPath, "root.osgb");
+    EXPECT_EQ(file.data.tiles->files[0], "tile_0000.osgb"); // relative to the root's folder
+
+    const fs::path tile = dir / file.data.tiles->files[2];
+    ASSERT_TRUE(fs::exists(tile)) << tile;
+    fs::remove(tile);
+    expectFailure(quoted(fs::path(paged.rootPath)) + " -o " + quoted(dir / "again.pvs"), 1,
+                  "is a paged database whose tile " + tile.string());
+    expectFailure(quoted(fs::path(paged.rootPath)) + " -o " + quoted(dir / "again.pvs"), 1,
+                  "cannot be read: a bake needs every tile");
+    EXPECT_FALSE(fs::exists(dir / "again.pvs"));
 }

@@ -4,13 +4,16 @@
 // checked by the fingerprint they have.
 #include "PvsSample.h"
 
+#include <osgVis/PagedDatabase>
 #include <osgVis/SceneExtractor>
 #include <osgVis/VisibilityGroup>
+#include <osgVis/core/cellportal/CellPortalBake.h>
 #include <osgVis/core/cellportal/CellPortalModule.h>
 #include <osgVis/core/multifocal/MultifocalModule.h>
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/core/scene/SceneFingerprint.h>
 #include <osgVis/gen/Generator.h>
+#include <osgVis/gen/PagedScene.h>
 
 #include <osg/Geode>
 #include <osg/Geometry>
@@ -406,4 +409,44 @@ TEST_F(PvsPlugin, PvsBakedWithoutClustersIsReportedAsSuchWhenClustersSplitTheMod
     const osg::ref_ptr<osgVis::VisibilityGroup> group = readGroup(path("x.pvs"));
     ASSERT_TRUE(group.valid());
     EXPECT_EQ(description(*group), "osgVis:pvs-trusted");
+}
+
+// A bake of a whole paged database (osgvispvs reads every tile): the plugin checks the root file's
+// own objects, registers the data by them, and leaves the tiles to the pager.
+TEST_F(PvsPlugin, PagedDatabaseBakeReadsAsTrustedOverTheRootAlone)
+{
+    osgVis::gen::GenerateOptions options;
+    options.kind = osgVis::gen::SceneKind::Office;
+    options.triangles = 4000;
+    osgVis::gen::PagedOptions paging;
+    paging.tiles = 6;
+    const osgVis::gen::PagedSummary paged =
+        osgVis::gen::writePagedScene(*osgVis::gen::generate(options).root, _dir.string(), paging);
+    osg::ref_ptr<osg::Node> whole = osgDB::readRefNodeFile(paged.rootPath);
+    ASSERT_TRUE(whole.valid());
+    ASSERT_TRUE(osgVis::loadWholeDatabase(*whole).unreadable.empty());
+    osgVis::core::PvsFile file;
+    file.modelPath = "root.osgb";
+    file.method = "cellportal";
+    file.data = osgVis::core::bakeCellPortal(osgVis::extractScene(*whole)->scene);
+    ASSERT_TRUE(file.data.tiles);
+    osgVis::core::writePvsFile(path("db.pvs"), file);
+
+    const osg::ref_ptr<osgVis::VisibilityGroup> group = readGroup(path("db.pvs"));
+    ASSERT_TRUE(group.valid());
+    EXPECT_EQ(group->getModes(), "cellportal");
+    EXPECT_EQ(description(*group), "osgVis:pvs-trusted");
+    const auto root = osgVis::extractScene(*group->getChild(0));
+    ASSERT_TRUE(root->scene.tiles);
+    EXPECT_TRUE(root->scene.tiles->files.empty()); // nothing paged in yet
+    const auto registered = osgVis::core::findBakedCellPortalData(root->scene.tiles->rootFingerprint);
+    ASSERT_TRUE(registered);
+    EXPECT_EQ(registered->objectCount, file.data.objectCount);
+
+    // Another root (one tile fewer) is another database.
+    osg::ref_ptr<osg::Group> fewer = dynamic_cast<osg::Group*>(osgDB::readRefNodeFile(paged.rootPath).get());
+    ASSERT_TRUE(fewer.valid());
+    fewer->removeChildren(0, 1);
+    ASSERT_TRUE(osgDB::writeNodeFile(*fewer, paged.rootPath));
+    readUntrusted(path("db.pvs"), "baked for another paged database (the root file's objects differ from the bake's)");
 }
