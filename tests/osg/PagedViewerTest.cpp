@@ -36,6 +36,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <set>
 #include <thread>
 #include <unistd.h>
 
@@ -484,18 +485,29 @@ TEST(PagedViewer, GeneratedPagedCityDrawsThePlainPixelsOnceLoadingSettles)
 
 // cellportal with data baked on the whole database (docs/paging.md): every load state uses them,
 // none bakes on the spot, and the pixels are plain OSG's once loading settles.
-TEST(PagedViewer, PagedFloorWithAWholeDatabaseBakeDrawsThePlainPixels)
+namespace
+{
+// The generated floor as a paged database, baked whole (as osgvispvs does) and the data registered.
+GeneratedDatabase bakedPagedFloor()
 {
     const GeneratedDatabase floor = generatedDatabase(osgVis::gen::SceneKind::Floor, 60000, 24, "floor");
+    osg::ref_ptr<osg::Node> whole = osgDB::readRefNodeFile(floor.rootFile);
+    EXPECT_TRUE(whole.valid() && osgVis::loadWholeDatabase(*whole).unreadable.empty());
+    if (whole)
     {
-        osg::ref_ptr<osg::Node> whole = osgDB::readRefNodeFile(floor.rootFile);
-        ASSERT_TRUE(whole.valid());
-        ASSERT_TRUE(osgVis::loadWholeDatabase(*whole).unreadable.empty());
         const osg::ref_ptr<osgVis::ExtractedScene> extracted = osgVis::extractScene(*whole);
         auto data = std::make_shared<const osgVis::core::CellPortalData>(osgVis::core::bakeCellPortal(extracted->scene));
-        ASSERT_TRUE(data->tiles);
+        EXPECT_TRUE(data->tiles);
         osgVis::core::registerBakedCellPortalData(data);
     }
+    return floor;
+}
+
+} // namespace
+
+TEST(PagedViewer, PagedFloorWithAWholeDatabaseBakeDrawsThePlainPixels)
+{
+    const GeneratedDatabase floor = bakedPagedFloor();
     osg::ref_ptr<osg::Node> plain = osgDB::readRefNodeFile(floor.rootFile);
     const std::vector<Outcome> reference = runSettled(plain.get(), floor.views);
     if (!reference[0].image || !reference[0].image->data())
@@ -556,5 +568,61 @@ TEST(PagedViewer, TileOnThePathAheadIsPrefetchedThoughHidden)
         ASSERT_TRUE(outcome.settled);
         EXPECT_EQ(outcome.skipped, 1.0); // the row is hidden all along
         EXPECT_EQ(loaded(*culled.behind), prefetchFrames != 0);
+    }
+}
+
+// With a baked cellportal PVS the prefetch also asks for the tiles some eye along the predicted
+// path may see (the PVS of the cells ahead), not only those whose box the path crosses.
+TEST(PagedViewer, TilesInTheBakedPvsAheadArePrefetched)
+{
+    const GeneratedDatabase floor = bakedPagedFloor();
+    // A creeping eye: 1 cm every other frame along its gaze for 45 steps, so the path ahead is a few
+    // cm long.
+    osg::Vec3d eye, centre, up;
+    floor.views[1].getLookAt(eye, centre, up);
+    const osg::Vec3d gaze = (centre - eye) / (centre - eye).length();
+    std::set<std::string> before;
+    for (const unsigned prefetchFrames : {0u, 5u})
+    {
+        SCOPED_TRACE("prefetchFrames " + std::to_string(prefetchFrames));
+        const osg::ref_ptr<osgVis::VisibilityGroup> group = groupOver("cellportal", floor.rootFile);
+        osgVis::PagingOptions paging;
+        paging.prefetchFrames = prefetchFrames;
+        group->setPagingOptions(paging);
+        std::vector<Step> steps;
+        for (int i = 0; i < 45; ++i)
+            steps.push_back({osg::Matrixd::lookAt(eye + gaze * (0.01 * i), centre + gaze * (0.01 * i), up),
+                             [frames = 0]() mutable { return ++frames > 1; }});
+        const Outcome outcome = run(group.get(), osgViewer::ViewerBase::SingleThreaded, steps);
+        if (!outcome.image || !outcome.image->data())
+            GTEST_SKIP() << "no GL context (run under xvfb-run)";
+        ASSERT_TRUE(outcome.settled);
+        const osg::ref_ptr<const osgVis::ExtractedScene> scene = group->getViewCuller()->getScene();
+        std::set<std::string> loadedNow;
+        unsigned offThePath = 0; // loaded now, not without prefetch, and its box nowhere near the path
+        for (const osgVis::PagedNodeRecord& record : scene->pagedNodes)
+        {
+            const osg::Group& node = *scene->refs[record.placeholder].paged;
+            if (node.getNumChildren() == 0)
+                continue;
+            loadedNow.insert(node.getName());
+            osgVis::core::Aabb box = scene->scene.objects[record.placeholder].bounds;
+            box.expand(box.min - osgVis::core::Vec3(0.5));
+            box.expand(box.max + osgVis::core::Vec3(0.5));
+            bool onPath = false;
+            for (int cm = 0; cm <= 55; ++cm)
+            {
+                const osg::Vec3d at = eye + gaze * (0.01 * cm);
+                onPath = onPath || box.contains(osgVis::core::Vec3(at.x(), at.y(), at.z()));
+            }
+            offThePath += prefetchFrames != 0 && !before.count(node.getName()) && !onPath;
+        }
+        if (prefetchFrames == 0)
+            before = loadedNow;
+        else
+        {
+            EXPECT_GT(offThePath, 0u) << loadedNow.size() << " tiles loaded, " << before.size() << " without prefetch";
+            EXPECT_TRUE(std::includes(loadedNow.begin(), loadedNow.end(), before.begin(), before.end()));
+        }
     }
 }
