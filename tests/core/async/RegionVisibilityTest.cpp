@@ -199,6 +199,30 @@ TEST(AsyncVisibility, AnswersOnlyOnceTheWorkerHasARegionHoldingTheView)
     EXPECT_GE(statistics.regionsComputed, 1u);
 }
 
+// What a prefetch reads: the finished regions, every direction, so more than the view's answer and
+// everything the rays see from the region's eyes.
+TEST(AsyncVisibility, RegionsAheadHoldTheAnswersOfEveryDirection)
+{
+    const City city = makeCity();
+    AsyncVisibility async("frustum+octree");
+    VisibleSet ahead(3, true);
+    EXPECT_FALSE(async.regionsAhead(ahead)) << "no scene yet";
+    async.setScene(shared(city.scene));
+    const View view = streetView(10.0);
+    VisibleSet visible;
+    EXPECT_FALSE(async.cull(view, visible));
+    EXPECT_FALSE(async.regionsAhead(ahead)) << "no region finished yet";
+    EXPECT_EQ(ahead.capacity(), 3u) << "nothing finished leaves the set untouched";
+    async.waitIdle();
+    ASSERT_TRUE(async.cull(view, visible));
+    ASSERT_TRUE(async.regionsAhead(ahead));
+    EXPECT_TRUE(isSubset(visible, ahead));
+    EXPECT_GT(ahead.count(), visible.count()) << "a region looks every way, the view only ahead";
+    const VisibleSet behind = syncAnswer("frustum+octree", city.scene, streetView(10.0, 180.0));
+    EXPECT_TRUE(isSubset(behind, ahead));
+    EXPECT_LT(ahead.count(), city.scene.objects.size());
+}
+
 TEST(AsyncVisibility, PredictsASteadyWalkAndKeepsEverythingTheRaysSee)
 {
     const City city = makeCity();

@@ -139,6 +139,26 @@ bool AsyncVisibility::cull(const View& view, VisibleSet& visible)
     return true;
 }
 
+bool AsyncVisibility::regionsAhead(VisibleSet& visible) const
+{
+    if (!_scene)
+        return false;
+    std::vector<std::shared_ptr<const Answer>> answers;
+    {
+        std::lock_guard<std::mutex> lock(_mutex);
+        for (const std::shared_ptr<const Answer>& answer : _answers)
+            if (answer->scene == _scene)
+                answers.push_back(answer);
+    }
+    if (answers.empty())
+        return false;
+    visible.reset(_scene->objects.size());
+    for (const std::shared_ptr<const Answer>& answer : answers)
+        for (const ObjectId id : answer->objects)
+            visible.set(id);
+    return true;
+}
+
 AsyncStatistics AsyncVisibility::statistics() const
 {
     std::lock_guard<std::mutex> lock(_mutex);

@@ -73,6 +73,11 @@ public:
     bool cull(const View& view, VisibleSet& visible);
 
     AsyncStatistics statistics() const;
+    /// The union of the finished region answers for the current scene (the region the eye stands in
+    /// and the one asked for ahead of it), every direction, no frustum cut: what the eye may see over
+    /// its next frames, for a prefetch. False, `visible` untouched, when none is finished. Cull thread.
+    bool regionsAhead(VisibleSet& visible) const;
+
     /// Blocks until the worker has nothing queued or running (tests and tools; never the cull thread).
     void waitIdle();
 
