@@ -108,7 +108,7 @@ std::string benchUsage()
            "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
            "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8]\n"
            "                   [--mask-slowdown K] [--cull-only]\n"
-           "                   [--dynamic] [--paged [--paging-requests N] [--paging-keep N] [--paging-prefetch N]]\n"
+           "                   [--dynamic] [--paged [--paging-requests N] [--paging-keep N] [--paging-keep-mb M] [--paging-prefetch N]]\n"
            "                   [--threading MODEL,...] [--async on|off|on,off]\n"
            "                   [--async-lookahead N] [--async-region X,Y,Z]\n"
            "                   [--volume X0,Y0,Z0,X1,Y1,Z1|paper [--plane-resolution N] [--planes N]\n"
@@ -171,8 +171,10 @@ std::string benchUsage()
            "  screen, a view asks for N per frame, nearest first (default 0: every visible one, as OSG\n"
            "  does). --paging-keep N: a loaded tile hidden for at most N\n"
            "  frames keeps its time stamps fresh (default 120), within OSG_MAX_PAGEDLOD.\n"
+           "  --paging-keep-mb M: and within M MB of their geometry's arrays (default 0: no limit).\n"
            "  --paging-prefetch N: tiles the eye will pass through within N frames at its last step are\n"
-           "  requested ahead at a lower priority (default 0: off).\n"
+           "  requested ahead at a lower priority (default 0: off), and with a baked cellportal\n"
+           "  PVS the tiles some eye along that path may see.\n"
            "--threading M1,M2 / --async on,off: also render every osg and module-chain mode under each\n"
            "  OSG threading model (SingleThreaded, CullDrawThreadPerContext, DrawThreadPerContext,\n"
            "  CullThreadPerCameraDrawThreadPerContext; default SingleThreaded) with asynchronous\n"
@@ -333,6 +335,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.paging.requestsPerFrame = unsigned(parseUnsigned(flag, value()));
         else if (flag == "--paging-keep")
             options.paging.keepFrames = unsigned(parseUnsigned(flag, value()));
+        else if (flag == "--paging-keep-mb")
+            options.paging.keepBytes = parseUnsigned(flag, value()) * 1000000u;
         else if (flag == "--paging-prefetch")
             options.paging.prefetchFrames = unsigned(parseUnsigned(flag, value()));
         else if (flag == "--volume")
@@ -408,8 +412,9 @@ BenchOptions parseBenchOptions(int argc, char** argv)
     const PagingOptions defaultPaging;
     if (!options.paged && (options.paging.requestsPerFrame != defaultPaging.requestsPerFrame ||
                            options.paging.keepFrames != defaultPaging.keepFrames ||
+                           options.paging.keepBytes != defaultPaging.keepBytes ||
                            options.paging.prefetchFrames != defaultPaging.prefetchFrames))
-        throw UsageError("--paging-requests, --paging-keep and --paging-prefetch go with --paged");
+        throw UsageError("--paging-requests, --paging-keep, --paging-keep-mb and --paging-prefetch go with --paged");
     if (options.maskSlowdown != 1 && !options.maskSweep())
         throw UsageError("--mask-slowdown slows the observer of the mask sweep: give --mask-deltas too");
     // note: without --views the walk's length is known only once loaded; the sweep checks again there.

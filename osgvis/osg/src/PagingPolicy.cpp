@@ -3,10 +3,13 @@
 
 #include "Extraction.h"
 
+#include <osg/Geometry>
+#include <osg/NodeVisitor>
 #include <osg/PagedLOD>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace osgVis
 {
@@ -74,6 +77,32 @@ bool segmentMeetsBox(const osg::Vec3d& a, const osg::Vec3d& d, const core::Aabb&
     return true;
 }
 
+// The bytes a loaded tile's geometry holds in memory: its arrays and index lists, counted once per
+// use (what a budget of kept tiles is about; textures and GL copies are not seen here).
+struct GeometryBytes : osg::NodeVisitor
+{
+    GeometryBytes() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Geometry& geometry) override
+    {
+        osg::Geometry::ArrayList arrays;
+        geometry.getArrayList(arrays);
+        for (const osg::Array* array : arrays)
+            bytes += array ? array->getTotalDataSize() : 0;
+        for (const osg::ref_ptr<osg::PrimitiveSet>& primitives : geometry.getPrimitiveSetList())
+            if (const osg::DrawElements* elements = primitives ? primitives->getDrawElements() : nullptr)
+                bytes += elements->getTotalDataSize();
+    }
+    std::uint64_t bytes = 0;
+};
+
+std::uint64_t loadedBytes(osg::Group& node)
+{
+    GeometryBytes counter;
+    for (unsigned child = 0; child < node.getNumChildren(); ++child)
+        node.getChild(child)->accept(counter);
+    return counter.bytes;
+}
+
 // What PagedLOD::traverse would have stamped had the cull entered it.
 void renewStamps(osg::PagedLOD& node, const osg::FrameStamp& frameStamp)
 {
@@ -121,13 +150,27 @@ PagingFigures applyPagingPolicy(const PagingOptions& options, const ExtractedSce
             frame - lastVisible[id] <= options.keepFrames)
             recent.emplace_back(frame - lastVisible[id], paged);
     }
-    // The pager's own budget of loaded paged nodes holds: the most recently seen are kept first.
+    // The pager's own budget of loaded paged nodes holds, and the bytes budget when set: the most
+    // recently seen are kept first, each in turn while it fits (a large tile seen lately does not
+    // keep smaller ones out).
     const std::size_t room = residentBudget > visibleLoaded ? residentBudget - visibleLoaded : 0;
-    if (recent.size() > room)
+    if (recent.size() > room || options.keepBytes != 0)
     {
-        std::nth_element(recent.begin(), recent.begin() + room, recent.end(),
-                         [](const auto& a, const auto& b) { return a.first < b.first; });
-        recent.resize(room);
+        std::sort(recent.begin(), recent.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::size_t kept = 0;
+        std::uint64_t bytes = 0;
+        for (std::size_t i = 0; i < recent.size() && kept < room; ++i)
+        {
+            if (options.keepBytes != 0)
+            {
+                const std::uint64_t size = loadedBytes(*recent[i].second);
+                if (bytes + size > options.keepBytes)
+                    continue;
+                bytes += size;
+            }
+            recent[kept++] = recent[i];
+        }
+        recent.resize(kept);
     }
     for (const auto& kept : recent)
         renewStamps(*kept.second, *frameStamp);

@@ -49,13 +49,16 @@ core::Mat4 toCore(const osg::Matrixd& m)
 }
 
 // For the prefetch: what some eye near the predicted path (eye to eye + ahead) may see, by the
+// asynchronous worker's finished regions (the one the eye is in and the one ahead), or else by the
 // chain's region query (a baked PVS of the cells ahead, for cellportal). Null when the chain answers
-// no regions, culls asynchronously (its regions are the worker's), or keeps everything, which says
-// nothing about what lies ahead.
-const core::VisibleSet* regionSeenAhead(core::ModuleChain& chain, bool async, const core::View& current,
-                                        const osg::Vec3d& eye, const osg::Vec3d& ahead, core::VisibleSet& out)
+// no regions or its answer keeps everything, which says nothing about what lies ahead.
+const core::VisibleSet* regionSeenAhead(core::ModuleChain& chain, const core::AsyncVisibility* async,
+                                        const core::View& current, const osg::Vec3d& eye, const osg::Vec3d& ahead,
+                                        core::VisibleSet& out)
 {
-    if (async || !chain.supportsRegions())
+    if (async)
+        return async->regionsAhead(out) && out.count() != out.capacity() ? &out : nullptr;
+    if (!chain.supportsRegions())
         return nullptr;
     core::ViewRegion region;
     region.eyes.expand(core::Vec3(eye.x(), eye.y(), eye.z()));
@@ -301,7 +304,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
             const osg::Vec3d step = (eye - view->previousEye) / double(frame - view->previousFrame);
             view->seenAhead.reset(view->visible.capacity());
             const core::VisibleSet* seenAhead =
-                paging.prefetchFrames != 0 ? regionSeenAhead(view->chain, view->async != nullptr, coreView, eye,
+                paging.prefetchFrames != 0 ? regionSeenAhead(view->chain, view->async.get(), coreView, eye,
                                                              step * double(paging.prefetchFrames), view->seenAhead)
                                            : nullptr;
             figures.pagedNodesPrefetched =
