@@ -587,10 +587,13 @@ TEST(PagedViewer, TileOnThePathAheadIsPrefetchedThoughHidden)
 }
 
 // With a baked cellportal PVS the prefetch also asks for the tiles some eye along the predicted
-// path may see (the PVS of the cells ahead), not only those whose box the path crosses.
-TEST(PagedViewer, TilesInTheBakedPvsAheadArePrefetched)
+// path may see (the PVS of the cells ahead), not only those whose box the path crosses; culling
+// asynchronously, the worker's regions say the same.
+namespace
 {
-    const GeneratedDatabase floor = bakedPagedFloor();
+void expectPrefetchFromRegions(const GeneratedDatabase& floor, bool async)
+{
+    SCOPED_TRACE(async ? "asynchronous" : "synchronous");
     // A creeping eye: 1 cm every other frame along its gaze for 45 steps, so the path ahead is a few
     // cm long.
     osg::Vec3d eye, centre, up;
@@ -601,6 +604,7 @@ TEST(PagedViewer, TilesInTheBakedPvsAheadArePrefetched)
     {
         SCOPED_TRACE("prefetchFrames " + std::to_string(prefetchFrames));
         const osg::ref_ptr<osgVis::VisibilityGroup> group = groupOver("cellportal", floor.rootFile);
+        group->setAsync(async);
         osgVis::PagingOptions paging;
         paging.prefetchFrames = prefetchFrames;
         group->setPagingOptions(paging);
@@ -640,4 +644,12 @@ TEST(PagedViewer, TilesInTheBakedPvsAheadArePrefetched)
             EXPECT_TRUE(std::includes(loadedNow.begin(), loadedNow.end(), before.begin(), before.end()));
         }
     }
+}
+} // namespace
+
+TEST(PagedViewer, TilesInTheBakedPvsAheadArePrefetched)
+{
+    const GeneratedDatabase floor = bakedPagedFloor();
+    expectPrefetchFromRegions(floor, false);
+    expectPrefetchFromRegions(floor, true);
 }

@@ -115,6 +115,17 @@ private:
 void expectConsistent(const PvsFile& file)
 {
     const CellPortalData& d = file.data;
+    if (d.tiles)
+    {
+        const SceneTiles& t = *d.tiles;
+        ASSERT_EQ(t.keys.size(), d.objectCount);
+        ASSERT_EQ(t.owners.size(), t.files.size());
+        ASSERT_EQ(t.fingerprints.size(), t.files.size());
+        for (ObjectId owner : t.owners)
+            ASSERT_LT(owner, d.objectCount);
+        for (const TileKey& key : t.keys)
+            ASSERT_TRUE(key.tile == RootTile || key.tile < t.files.size());
+    }
     const CellGraph& g = d.graph;
     const std::size_t cells = g.cells.size();
     ASSERT_EQ(d.sources.size(), cells);
@@ -220,6 +231,32 @@ TEST(PvsFuzz, MutantsDecodeConsistentlyOrThrowPvsFormatError)
              // encodes to, once the unknown optional sections a mutation may have made are left out.
              const std::vector<std::uint8_t> known =
                  osgVis::test::withSectionsOnly(bytes, {"HEAD", "BILD", "GEOM", "CPDT", "VCEL"});
+             ASSERT_EQ(encodePvs(file), known) << "case " << n;
+         });
+}
+
+// The sample with tile keys: two tiles owned by objects 0 and 1, the other objects in turn in each.
+TEST(PvsFuzz, MutantsOfTileKeysDecodeConsistentlyOrThrowPvsFormatError)
+{
+    PvsFile sample = osgVis::test::makeSamplePvs();
+    auto tiles = std::make_shared<SceneTiles>();
+    tiles->complete = true;
+    tiles->files = {"tile_0000.osgb", "deeper/tile_0001.osgb"};
+    tiles->owners = {0, 1};
+    tiles->fingerprints = {0x1234, 0x5678};
+    tiles->rootFingerprint = 0x9abc;
+    std::uint32_t ranks[3] = {0, 0, 0};
+    for (ObjectId id = 0; id < sample.data.objectCount; ++id)
+    {
+        const std::uint32_t tile = id < 2 ? RootTile : id % 2;
+        tiles->keys.push_back({tile, ranks[tile == RootTile ? 2 : tile]++});
+    }
+    sample.data.tiles = tiles;
+    fuzz(encodePvs(sample), 20261204, {"tile keys"},
+         [](const PvsFile& file, const std::vector<std::uint8_t>& bytes, int n)
+         {
+             const std::vector<std::uint8_t> known =
+                 osgVis::test::withSectionsOnly(bytes, {"HEAD", "BILD", "GEOM", "CPDT", "TILE", "VCEL"});
              ASSERT_EQ(encodePvs(file), known) << "case " << n;
          });
 }
