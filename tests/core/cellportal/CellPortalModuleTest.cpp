@@ -29,13 +29,7 @@ RoomRow roomRow(int rooms, const std::vector<double>& doorY)
 {
     RoomRow row;
     Scene& s = row.scene;
-    const double length = 4.0 * rooms;
-    addBox(s, {-0.2, -0.2, -0.2}, {length + 0.2, 4.2, 0.0}, "floor");
-    addBox(s, {-0.2, -0.2, 3.0}, {length + 0.2, 4.2, 3.2}, "ceiling");
-    addBox(s, {-0.2, -0.2, 0.0}, {length + 0.2, 0.0, 3.0}, "south wall");
-    addBox(s, {-0.2, 4.0, 0.0}, {length + 0.2, 4.2, 3.0}, "north wall");
-    addBox(s, {-0.2, 0.0, 0.0}, {0.0, 4.0, 3.0}, "west wall");
-    addBox(s, {length, 0.0, 0.0}, {length + 0.2, 4.0, 3.0}, "east wall");
+    osgVis::test::addRoomRowShell(s, rooms);
     for (int i = 1; i < rooms; ++i)
     {
         const double x = 4.0 * i, y = doorY[std::size_t(i - 1)];

@@ -28,13 +28,7 @@ std::string roomFile(int room) { return "room_" + std::to_string(room) + ".osgb"
 Scene pagedRow(const std::vector<int>& loaded, double crateShift = 0.0)
 {
     Scene s;
-    const double length = 4.0 * Rooms;
-    addBox(s, {-0.2, -0.2, -0.2}, {length + 0.2, 4.2, 0.0}, "floor");
-    addBox(s, {-0.2, -0.2, 3.0}, {length + 0.2, 4.2, 3.2}, "ceiling");
-    addBox(s, {-0.2, -0.2, 0.0}, {length + 0.2, 0.0, 3.0}, "south wall");
-    addBox(s, {-0.2, 4.0, 0.0}, {length + 0.2, 4.2, 3.0}, "north wall");
-    addBox(s, {-0.2, 0.0, 0.0}, {0.0, 4.0, 3.0}, "west wall");
-    addBox(s, {length, 0.0, 0.0}, {length + 0.2, 4.0, 3.0}, "east wall");
+    osgVis::test::addRoomRowShell(s, Rooms);
     auto tiles = std::make_shared<SceneTiles>();
     tiles->keys.assign(s.objects.size(), TileKey{});
     std::vector<ObjectId> placeholder;

@@ -44,6 +44,17 @@ ObjectId addBox(Scene& scene, const Vec3& lo, const Vec3& hi, const std::string&
     return addTriangles(scene, boxTriangles(lo, hi), name, flags);
 }
 
+void addRoomRowShell(core::Scene& s, int rooms)
+{
+    const double length = 4.0 * rooms;
+    addBox(s, {-0.2, -0.2, -0.2}, {length + 0.2, 4.2, 0.0}, "floor");
+    addBox(s, {-0.2, -0.2, 3.0}, {length + 0.2, 4.2, 3.2}, "ceiling");
+    addBox(s, {-0.2, -0.2, 0.0}, {length + 0.2, 0.0, 3.0}, "south wall");
+    addBox(s, {-0.2, 4.0, 0.0}, {length + 0.2, 4.2, 3.0}, "north wall");
+    addBox(s, {-0.2, 0.0, 0.0}, {0.0, 4.0, 3.0}, "west wall");
+    addBox(s, {length, 0.0, 0.0}, {length + 0.2, 4.0, 3.0}, "east wall");
+}
+
 City makeCity()
 {
     City city;

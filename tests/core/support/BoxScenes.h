@@ -17,6 +17,10 @@ core::ObjectId addTriangles(core::Scene& scene, const std::vector<core::Triangle
 core::ObjectId addBox(core::Scene& scene, const core::Vec3& lo, const core::Vec3& hi, const std::string& name,
                       std::uint32_t flags = core::OBJECT_NONE);
 
+// The shell of a row of `rooms` rooms 4 m wide (x) and 4 m deep (y), 3 m tall: floor and ceiling
+// slabs and the four outer walls, 0.2 m thick (the cell-portal tests put inner walls and doors in).
+void addRoomRowShell(core::Scene& scene, int rooms);
+
 // 6×6 blocks of 20×20 (streets 10 wide between them, street centres at x, y = -5 + 30·k), each block
 // four buildings of 8×8 with 4-wide alleys and deterministic heights, and street furniture
 // (1×1×1.5 boxes) along the kerbs.
