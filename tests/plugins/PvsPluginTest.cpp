@@ -439,7 +439,7 @@ TEST_F(PvsPlugin, PagedDatabaseBakeReadsAsTrustedOverTheRootAlone)
     const auto root = osgVis::extractScene(*group->getChild(0));
     ASSERT_TRUE(root->scene.tiles);
     EXPECT_TRUE(root->scene.tiles->files.empty()); // nothing paged in yet
-    const auto registered = osgVis::core::findBakedCellPortalData(root->scene.tiles->rootFingerprint);
+    const auto registered = osgVis::core::findBakedCellPortalDataOfDatabase(root->scene.tiles->rootFingerprint);
     ASSERT_TRUE(registered);
     EXPECT_EQ(registered->objectCount, file.data.objectCount);
 

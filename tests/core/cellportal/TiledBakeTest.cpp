@@ -160,6 +160,25 @@ TEST(TiledBake, AnEditedTileOrAnotherRootIsRefusedAndBakedOnTheSpot)
     EXPECT_TRUE(module.bakedOnTheSpot());
 }
 
+// With nothing paged in, a scene is the root's objects alone and fingerprints as the root does:
+// its own bake and the whole database's are stored apart.
+TEST(TiledBake, ABakeOfTheRootAloneDoesNotHideTheWholeDatabasesBake)
+{
+    const Scene whole = pagedRow({0, 1, 2, 3, 4});
+    const Scene rootAlone = pagedRow({});
+    EXPECT_EQ(sceneFingerprint(rootAlone), rootAlone.tiles->rootFingerprint);
+    registerBakedCellPortalData(std::make_shared<const CellPortalData>(bakeCellPortal(whole)));
+    registerBakedCellPortalData(std::make_shared<const CellPortalData>(bakeCellPortal(rootAlone)));
+    ASSERT_TRUE(findBakedCellPortalDataOfDatabase(rootAlone.tiles->rootFingerprint));
+    EXPECT_TRUE(findBakedCellPortalDataOfDatabase(rootAlone.tiles->rootFingerprint)->tiles);
+    CellPortalModule module;
+    module.setScene(pagedRow({1, 2}));
+    EXPECT_TRUE(module.usesTiledBake()) << module.tiledBakeRefusal();
+    module.setScene(rootAlone); // its own bake, found by its fingerprint
+    EXPECT_FALSE(module.usesTiledBake());
+    EXPECT_FALSE(module.bakedOnTheSpot());
+}
+
 TEST(TiledBake, TileKeysSurviveTheFileAndTheReaderRefusesBrokenOnes)
 {
     PvsFile file;

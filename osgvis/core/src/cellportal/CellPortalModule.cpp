@@ -27,6 +27,10 @@ const char* stageName(CellPortalStage stage)
     }
     return "cellportal";
 }
+
+// A root file's objects alone fingerprint like a scene of those objects (nothing paged in), whose
+// own bake is stored by that fingerprint: the store keeps whole-database bakes apart.
+std::uint64_t tiledStoreKey(std::uint64_t rootFingerprint) { return rootFingerprint ^ 0x74696c656b657973ull; }
 } // namespace
 
 void registerBakedCellPortalData(std::shared_ptr<const CellPortalData> data)
@@ -37,13 +41,18 @@ void registerBakedCellPortalData(std::shared_ptr<const CellPortalData> data)
     // A bake of a whole paged database is also found by its root file's objects, which every
     // load state of the database shares (CellPortalModule::setScene maps the rest).
     if (data->tiles)
-        BakedDataStore<CellPortalData>::instance().put(data->tiles->rootFingerprint, data);
+        BakedDataStore<CellPortalData>::instance().put(tiledStoreKey(data->tiles->rootFingerprint), data);
     BakedDataStore<CellPortalData>::instance().put(fingerprint, std::move(data));
 }
 
 std::shared_ptr<const CellPortalData> findBakedCellPortalData(std::uint64_t fingerprint)
 {
     return BakedDataStore<CellPortalData>::instance().find(fingerprint);
+}
+
+std::shared_ptr<const CellPortalData> findBakedCellPortalDataOfDatabase(std::uint64_t rootFingerprint)
+{
+    return BakedDataStore<CellPortalData>::instance().find(tiledStoreKey(rootFingerprint));
 }
 
 struct CellPortalModule::Impl
@@ -256,7 +265,7 @@ void CellPortalModule::setScene(const Scene& scene)
         impl.data = std::move(registered);
     else if (impl.given && impl.mapTiled(*impl.given, scene))
         impl.data = impl.given;
-    else if (auto whole = scene.tiles ? findBakedCellPortalData(scene.tiles->rootFingerprint) : nullptr;
+    else if (auto whole = scene.tiles ? findBakedCellPortalDataOfDatabase(scene.tiles->rootFingerprint) : nullptr;
              whole && impl.mapTiled(*whole, scene))
         impl.data = std::move(whole);
     impl.tiled = !impl.tiledPvs.empty();

@@ -59,8 +59,11 @@ private:
 
 /// Process-wide store of baked data by scene fingerprint: the `.pvs` reader registers what it loaded
 /// so that any CellPortalModule later given that scene uses it. Data baked on a whole paged database
-/// are also stored by its root file's objects (SceneTiles::rootFingerprint), so that a scene with
-/// any of its tiles loaded finds them. Thread-safe.
+/// are also stored by its root file's objects (findBakedCellPortalDataOfDatabase), so that a scene
+/// with any of its tiles loaded finds them. Thread-safe.
 void registerBakedCellPortalData(std::shared_ptr<const CellPortalData> data);
 std::shared_ptr<const CellPortalData> findBakedCellPortalData(std::uint64_t fingerprint);
+/// A bake of a whole paged database registered for the root file whose objects have this
+/// SceneTiles::rootFingerprint (null when none).
+std::shared_ptr<const CellPortalData> findBakedCellPortalDataOfDatabase(std::uint64_t rootFingerprint);
 } // namespace osgVis::core
