@@ -2,6 +2,8 @@
 #include <osgVis/core/scene/SceneFingerprint.h>
 #include <osgVis/core/scene/SceneTiles.h>
 
+#include "TileFingerprints.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -99,9 +101,36 @@ std::uint64_t sceneFingerprint(const Scene& scene)
     return hash.value();
 }
 
+std::vector<std::uint64_t> tileFingerprintsOf(const Scene& scene, const SceneTiles& tiles)
+{
+    // One pass over the objects for all tiles: each tile's hash starts with its object count.
+    const std::size_t rootSlot = tiles.files.size();
+    const auto slotOf = [&](std::uint32_t tile) { return tile == RootTile ? rootSlot : std::size_t(tile); };
+    const std::size_t objects = std::min(tiles.keys.size(), scene.objects.size());
+    std::vector<std::uint64_t> counts(rootSlot + 1, 0);
+    for (std::size_t id = 0; id < objects; ++id)
+        if (const std::uint32_t tile = tiles.keys[id].tile; tile == RootTile || tile < rootSlot)
+            ++counts[slotOf(tile)];
+    std::vector<Fnv1a> hashes(rootSlot + 1);
+    for (std::size_t slot = 0; slot <= rootSlot; ++slot)
+        hashes[slot].add(counts[slot]);
+    for (std::size_t id = 0; id < objects; ++id)
+        if (const std::uint32_t tile = tiles.keys[id].tile; tile == RootTile || tile < rootSlot)
+            addObject(hashes[slotOf(tile)], scene.objects[id]);
+    std::vector<std::uint64_t> values(rootSlot + 1);
+    for (std::size_t slot = 0; slot <= rootSlot; ++slot)
+        values[slot] = hashes[slot].value();
+    return values;
+}
+
 std::uint64_t tileFingerprint(const Scene& scene, const SceneTiles& tiles, std::uint32_t tile)
 {
-    std::uint64_t count = 0;
+    const std::vector<std::uint64_t> values = tileFingerprintsOf(scene, tiles);
+    if (tile == RootTile)
+        return values.back();
+    if (tile < tiles.files.size())
+        return values[tile];
+    std::uint64_t count = 0; // a tile the keys name without listing it (NoTile: the empty slots)
     for (const TileKey& key : tiles.keys)
         count += key.tile == tile;
     Fnv1a hash;

@@ -5,6 +5,8 @@
 #include <osgVis/core/scene/SceneFingerprint.h>
 #include <osgVis/core/scene/VisibleSet.h>
 
+#include "TileFingerprints.h"
+
 #include <stdexcept>
 #include <unordered_map>
 
@@ -52,10 +54,9 @@ void finishSceneTiles(const Scene& scene, SceneTiles& tiles)
                                         std::to_string(tiles.files.size()));
         key.local = next[key.tile == RootTile ? tiles.files.size() : key.tile]++;
     }
-    tiles.fingerprints.resize(tiles.files.size());
-    for (std::uint32_t t = 0; t < tiles.files.size(); ++t)
-        tiles.fingerprints[t] = tileFingerprint(scene, tiles, t);
-    tiles.rootFingerprint = tileFingerprint(scene, tiles, RootTile);
+    tiles.fingerprints = tileFingerprintsOf(scene, tiles);
+    tiles.rootFingerprint = tiles.fingerprints.back();
+    tiles.fingerprints.pop_back();
 }
 
 ObjectId ownerOf(const SceneTiles& tiles, ObjectId object)
