@@ -54,7 +54,7 @@ core::Mat4 toCore(const osg::Matrixd& m)
 // no regions or its answer keeps everything, which says nothing about what lies ahead.
 const core::VisibleSet* regionSeenAhead(core::ModuleChain& chain, const core::AsyncVisibility* async,
                                         const core::View& current, const osg::Vec3d& eye, const osg::Vec3d& ahead,
-                                        core::VisibleSet& out)
+                                        std::size_t objects, core::VisibleSet& out)
 {
     if (async)
         return async->regionsAhead(out) && out.count() != out.capacity() ? &out : nullptr;
@@ -65,7 +65,7 @@ const core::VisibleSet* regionSeenAhead(core::ModuleChain& chain, const core::As
     region.eyes.expand(core::Vec3(eye.x() + ahead.x(), eye.y() + ahead.y(), eye.z() + ahead.z()));
     region.minNearDistance = core::nearDistance(current);
     region.maxNearReach = core::nearPlaneReach(current);
-    out.reset(out.capacity(), true);
+    out.reset(objects, true);
     chain.cullRegion(region, out);
     return out.count() == out.capacity() ? nullptr : &out;
 }
@@ -302,11 +302,11 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
             handler && view->previousFrame != ~0u && frame > view->previousFrame && !scene->pagedNodes.empty())
         {
             const osg::Vec3d step = (eye - view->previousEye) / double(frame - view->previousFrame);
-            view->seenAhead.reset(view->visible.capacity());
             const core::VisibleSet* seenAhead =
-                paging.prefetchFrames != 0 ? regionSeenAhead(view->chain, view->async.get(), coreView, eye,
-                                                             step * double(paging.prefetchFrames), view->seenAhead)
-                                           : nullptr;
+                paging.prefetchFrames != 0
+                    ? regionSeenAhead(view->chain, view->async.get(), coreView, eye,
+                                      step * double(paging.prefetchFrames), view->visible.capacity(), view->seenAhead)
+                    : nullptr;
             figures.pagedNodesPrefetched =
                 prefetchAhead(*scene, view->visible, eye, step, paging.prefetchFrames, seenAhead, *handler, frameStamp);
         }
