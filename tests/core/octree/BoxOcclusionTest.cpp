@@ -804,6 +804,8 @@ TEST(BoxOcclusion, ClassifyAndFusedAllocateNothing)
     const std::vector<std::uint32_t> active{0, 1};
     const std::vector<BoxOccluderPlanes> planes = planesFor(polygons, active, box);
     BoxOccluderPlanes reused = planes[0];
+    PreparedOccluder prepared;
+    prepareOccluder(polygons[1], prepared);
     int invisible = 0, fusedCount = 0;
     const std::size_t before = osgVis::test::allocationCount();
     for (int k = 0; k < 1000; ++k)
@@ -811,7 +813,7 @@ TEST(BoxOcclusion, ClassifyAndFusedAllocateNothing)
         const Vec3 eye(0.001 * k, -0.002 * k, 10.0 - 0.01 * k);
         invisible += classify(polygons[0], planes[0], eye, Margin) == Occlusion::Invisible;
         fusedCount += fusedInvisible(polygons, active, planes, eye, Margin);
-        computePlanes(polygons[1], box, reused); // reuses the vectors' capacity
+        computePlanes(prepared, box, reused); // reuses the vectors' capacity
     }
     EXPECT_EQ(osgVis::test::allocationCount() - before, 0u);
     EXPECT_GT(fusedCount, 0);

@@ -144,12 +144,13 @@ int silhouetteCorners(const Vec3& edgeDirection, int corners[8])
     return entry.count;
 }
 
-void computePlanes(const OccluderPolygon& polygon, const Aabb& box, BoxOccluderPlanes& out)
+void prepareOccluder(const OccluderPolygon& polygon, PreparedOccluder& out)
 {
-    clearPlanes(out);
+    out.usable = false;
+    out.edges.clear();
     const std::vector<Vec3>& vertices = polygon.vertices;
     const std::size_t count = vertices.size();
-    if (count < 3 || box.empty() || !box.finite())
+    if (count < 3)
         return;
 
     // The polygon must be what classify assumes: finite, planar in its stated (unit) plane,
@@ -168,22 +169,82 @@ void computePlanes(const OccluderPolygon& polygon, const Aabb& box, BoxOccluderP
     }
     const double size = glm::length(bounds.extent());
     const double reach =
-        std::max({glm::length(glm::max(glm::abs(bounds.min), glm::abs(bounds.max))),
-                  glm::length(glm::max(glm::abs(box.min), glm::abs(box.max))), std::abs(polygon.plane.d)});
+        std::max(glm::length(glm::max(glm::abs(bounds.min), glm::abs(bounds.max))), std::abs(polygon.plane.d));
     if (!(size > 0.0) || !std::isfinite(size) || !std::isfinite(reach))
         return;
-    const double planeTolerance = RelativeSizeTolerance * size + RelativeReachTolerance * reach;
 
     Vec3 twiceAreaVector(0.0);
+    double planeDeviation = 0.0;
     for (std::size_t i = 0; i < count; ++i)
     {
-        if (!(std::abs(polygon.plane.distance(vertices[i])) <= planeTolerance))
-            return;
+        planeDeviation = std::max(planeDeviation, std::abs(polygon.plane.distance(vertices[i])));
         twiceAreaVector += glm::cross(vertices[i] - vertices[0], vertices[(i + 1) % count] - vertices[0]);
     }
     const double twiceArea = glm::dot(twiceAreaVector, normal); // negative when clockwise
     if (!(twiceArea > 2.0 * MinRelativeArea * size * size) || twiceArea < 0.999 * glm::length(twiceAreaVector))
         return;
+
+    double concavity = 0.0;
+    out.edges.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        PreparedOccluder::Edge& edgeOut = out.edges[i];
+        const Vec3& start = vertices[i];
+        const Vec3& end = vertices[(i + 1) % count];
+        edgeOut.start = start;
+        edgeOut.repeated = start == end;
+        if (edgeOut.repeated)
+            continue; // the neighbouring edges meet there, so the outline is unchanged
+        const Vec3 edge = end - start;
+        const Vec3 inPlane = edge - glm::dot(edge, normal) * normal;
+        const double edgeLength = glm::length(inPlane);
+        if (!(edgeLength > RelativeSizeTolerance * size))
+        {
+            // Nearly coincident vertices: the edge's direction is noise. Skipping it could open
+            // the outline at a sharp corner, so the polygon is not used.
+            out.edges.clear();
+            return;
+        }
+        edgeOut.along = inPlane / edgeLength;
+        edgeOut.inward = glm::cross(normal, edgeOut.along);
+        for (const Vec3& v : vertices)
+            concavity = std::max(concavity, -glm::dot(v - start, edgeOut.inward));
+        int corners[8];
+        edgeOut.candidateCount = std::uint8_t(silhouetteCorners(edgeOut.along, corners));
+        for (int k = 0; k < edgeOut.candidateCount; ++k)
+            edgeOut.candidates[k] = std::uint8_t(corners[k]);
+    }
+    out.usable = true;
+    out.plane = polygon.plane;
+    out.normal = normal;
+    out.size = size;
+    out.reach = reach;
+    out.planeDeviation = planeDeviation;
+    out.concavity = concavity;
+}
+
+void computePlanes(const OccluderPolygon& polygon, const Aabb& box, BoxOccluderPlanes& out)
+{
+    PreparedOccluder prepared;
+    prepareOccluder(polygon, prepared);
+    computePlanes(prepared, box, out);
+}
+
+void computePlanes(const PreparedOccluder& polygon, const Aabb& box, BoxOccluderPlanes& out)
+{
+    clearPlanes(out);
+    if (!polygon.usable || box.empty() || !box.finite())
+        return;
+    const double reach = std::max(polygon.reach, glm::length(glm::max(glm::abs(box.min), glm::abs(box.max))));
+    if (!std::isfinite(reach))
+        return;
+    // Cancellation in plane distances grows with the coordinates' magnitude, so the planarity and
+    // convexity tolerance depends on how far the box lies from the origin.
+    const double planeTolerance = RelativeSizeTolerance * polygon.size + RelativeReachTolerance * reach;
+    if (!(polygon.planeDeviation <= planeTolerance) || polygon.concavity > planeTolerance)
+        return; // not planar, or not convex (or not counter-clockwise)
+    const Vec3& normal = polygon.normal;
+    const std::size_t count = polygon.edges.size();
 
     // Which side of the polygon's plane the box is on, beyond the tolerance.
     const Vec3 boxExtent = box.extent();
@@ -207,42 +268,20 @@ void computePlanes(const OccluderPolygon& polygon, const Aabb& box, BoxOccluderP
 
     for (std::size_t i = 0; i < count; ++i)
     {
-        const Vec3& start = vertices[i];
-        const Vec3& end = vertices[(i + 1) % count];
-        if (start == end)
+        const PreparedOccluder::Edge& edge = polygon.edges[i];
+        if (edge.repeated)
         {
-            // A repeated vertex: the neighbouring edges meet there, so the outline is unchanged.
             if (boxSide != 0)
                 out.supporting[i] = alwaysSatisfiedPlane();
             continue;
         }
-        const Vec3 edge = end - start;
-        const Vec3 inPlane = edge - glm::dot(edge, normal) * normal;
-        const double edgeLength = glm::length(inPlane);
-        if (!(edgeLength > RelativeSizeTolerance * size))
-        {
-            // Nearly coincident vertices: the edge's direction is noise. Skipping it could open
-            // the outline at a sharp corner, so the polygon is not used.
-            clearPlanes(out);
-            return;
-        }
-        const Vec3 along = inPlane / edgeLength;
-        const Vec3 inward = glm::cross(normal, along);
-        for (const Vec3& v : vertices)
-        {
-            if (glm::dot(v - start, inward) < -planeTolerance)
-            {
-                clearPlanes(out); // not convex (or not counter-clockwise)
-                return;
-            }
-        }
-
-        int corners[8];
-        const int candidates = silhouetteCorners(along, corners);
+        const Vec3& start = edge.start;
+        const Vec3& inward = edge.inward;
+        const int candidates = edge.candidateCount;
         Section points[8];
         for (int k = 0; k < candidates; ++k)
         {
-            const Vec3 w = box.corner(corners[k]) - start;
+            const Vec3 w = box.corner(edge.candidates[k]) - start;
             points[k] = {glm::dot(w, inward), glm::dot(w, towardsBox)};
         }
 

@@ -3,7 +3,7 @@
 
 namespace osgVis::core
 {
-const BoxOccluderPlanes& BoxOcclusionCache::planesFor(std::uint32_t occluder, const OccluderPolygon& polygon,
+const BoxOccluderPlanes& BoxOcclusionCache::planesFor(std::uint32_t occluder, const PreparedOccluder& polygon,
                                                       const Aabb& box, std::uint32_t frame, bool& computed)
 {
     for (std::size_t i = 0; i < _occluders.size(); ++i)

@@ -25,7 +25,7 @@ class BoxOcclusionCache
 {
 public:
     // Planes of `occluder` against `box`, computed only when not cached. `computed` tells which.
-    const BoxOccluderPlanes& planesFor(std::uint32_t occluder, const OccluderPolygon& polygon, const Aabb& box,
+    const BoxOccluderPlanes& planesFor(std::uint32_t occluder, const PreparedOccluder& polygon, const Aabb& box,
                                        std::uint32_t frame, bool& computed);
 
     // Forgets everything (a module without temporal coherence calls it every frame).

@@ -91,6 +91,7 @@ struct OctreeModule::Impl
     std::uint32_t hierarchyDepth = 0;               // deepest level the last traversal reached
     std::vector<unsigned> hierarchyPlaneMasks;      // per depth: the plane mask a node passes on
     std::vector<OccluderPolygon> polygons;
+    std::vector<PreparedOccluder> prepared; // per polygon: its box-independent part of computePlanes
     OccluderSelector selector;
     std::vector<BoxOcclusionCache> nodeCaches, objectCaches;
     std::vector<std::int32_t> frontierSlot; // per node: its frontier task index, or -1
@@ -219,6 +220,9 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
     polygonBounds.clear();
     for (const OccluderPolygon& polygon : polygons)
         polygonBounds.push_back(boundsOf(polygon));
+    prepared.resize(polygons.size());
+    for (std::size_t p = 0; p < polygons.size(); ++p)
+        prepareOccluder(polygons[p], prepared[p]);
 
     nodeCaches.assign(tree.nodes().size(), BoxOcclusionCache());
     objectCaches.assign(scene.objects.size(), BoxOcclusionCache());
@@ -577,7 +581,7 @@ Occlusion OctreeModule::Impl::testBox(BoxOcclusionCache& cache, const Aabb& box,
         std::find(occluders.begin(), occluders.end(), cache.decidedBy) != occluders.end())
     {
         const std::uint32_t o = cache.decidedBy;
-        const BoxOccluderPlanes& planes = cache.planesFor(o, polygons[o], box, frame, computed);
+        const BoxOccluderPlanes& planes = cache.planesFor(o, prepared[o], box, frame, computed);
         if (hiddenBy(o, planes) == Occlusion::Invisible && depthSeparated(polygons[o], box))
         {
             ++out.statistics.cachedDecisions;
@@ -589,7 +593,7 @@ Occlusion OctreeModule::Impl::testBox(BoxOcclusionCache& cache, const Aabb& box,
     {
         if (shadows.misses(o, box))
             continue; // hides none of the box: Visible, without its planes
-        const BoxOccluderPlanes& planes = cache.planesFor(o, polygons[o], box, frame, computed);
+        const BoxOccluderPlanes& planes = cache.planesFor(o, prepared[o], box, frame, computed);
         if (!computed)
             ++out.statistics.cachedDecisions;
         const Occlusion c = hiddenBy(o, planes);

@@ -18,6 +18,7 @@
 #include <osgVis/core/geometry/Aabb.h>
 #include <osgVis/core/occluders/OccluderPolygon.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -75,7 +76,39 @@ struct EyeVolume
     double maxDistance(const Plane& plane) const { return plane.distance(center) + spread(plane.normal); }
 };
 
-/// Computes the planes of `polygon` against `box`.
+/// The part of computePlanes that depends on the polygon alone, done once per polygon instead of
+/// once per box: the checks that need no box (finite, unit plane, not a sliver, no near-zero edge),
+/// each edge's in-plane frame and the box corners that can lie on the silhouette along it. The
+/// planarity and convexity checks, whose tolerance grows with the box's distance from the origin,
+/// keep the polygon's worst deviation, compared per box.
+struct PreparedOccluder
+{
+    struct Edge
+    {
+        Vec3 start{0.0};
+        Vec3 along{0.0};  ///< unit edge direction in the polygon's plane
+        Vec3 inward{0.0}; ///< unit, in the plane, towards the polygon's inside
+        std::uint8_t candidateCount = 0;
+        std::array<std::uint8_t, 8> candidates{}; ///< silhouetteCorners(along)
+        bool repeated = false;                    ///< start equals end: no edge
+    };
+    bool usable = false; ///< false: computePlanes gives no planes for any box
+    Plane plane;
+    Vec3 normal{0.0};      ///< plane.normal made unit
+    double size = 0.0;     ///< the polygon's bounds' diagonal
+    double reach = 0.0;    ///< the largest of its vertices' magnitude (per axis) and |plane.d|
+    double planeDeviation = 0.0; ///< the largest |distance| of a vertex from the plane
+    double concavity = 0.0;      ///< the farthest a vertex lies outside an edge's inner side
+    std::vector<Edge> edges;
+};
+
+void prepareOccluder(const OccluderPolygon& polygon, PreparedOccluder& out);
+
+/// Computes the planes of a prepared polygon against `box`: the same planes, bit for bit, as the
+/// overload below.
+void computePlanes(const PreparedOccluder& polygon, const Aabb& box, BoxOccluderPlanes& out);
+
+/// Computes the planes of `polygon` against `box` (prepareOccluder, then the above).
 void computePlanes(const OccluderPolygon& polygon, const Aabb& box, BoxOccluderPlanes& out);
 
 /// Classifies from `eye` with planes computed by computePlanes. `margin` (world units) is the
