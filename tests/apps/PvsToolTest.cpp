@@ -6,6 +6,7 @@
 #include "AppProcess.h"
 #include "BadModelFiles.h"
 #include "BenchJson.h"
+#include "PagedOffice.h"
 #include "PvsSample.h"
 
 #include <osgVis/core/cellportal/CellPortalBake.h>
@@ -302,13 +303,7 @@ TEST(PvsTool, RefusesBadViewCellsNamingThem)
 TEST(PvsTool, BakesAPagedDatabaseWholeAndRefusesOneWithAnUnreadableTile)
 {
     const fs::path dir = scratchDirectory("apps", "PvsToolPaged");
-    osgVis::gen::GenerateOptions options;
-    options.kind = osgVis::gen::SceneKind::Office;
-    options.triangles = 4000;
-    osgVis::gen::PagedOptions paging;
-    paging.tiles = 6;
-    const osgVis::gen::PagedSummary paged =
-        osgVis::gen::writePagedScene(*osgVis::gen::generate(options).root, dir.string(), paging);
+    const osgVis::gen::PagedSummary paged = osgVis::test::writePagedOffice(dir.string());
     const AppRun run = osgvispvs(quoted(fs::path(paged.rootPath)) + " -o " + quoted(dir / "db.pvs"));
     ASSERT_EQ(run.exitCode, 0) << run.output;
     EXPECT_NE(run.output.find("read " + std::to_string(paged.tiles) + " paged tiles to bake the whole database"),

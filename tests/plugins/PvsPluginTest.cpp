@@ -2,6 +2,7 @@
 // osgdb_pvs through osgDB, as an application uses it: write x.pvs (bake + model beside), read it
 // back as a trusted cell-portal group, and every way the pair can go wrong; version 1 files are
 // checked by the fingerprint they have.
+#include "PagedOffice.h"
 #include "PvsSample.h"
 
 #include <osgVis/PagedDatabase>
@@ -415,13 +416,7 @@ TEST_F(PvsPlugin, PvsBakedWithoutClustersIsReportedAsSuchWhenClustersSplitTheMod
 // own objects, registers the data by them, and leaves the tiles to the pager.
 TEST_F(PvsPlugin, PagedDatabaseBakeReadsAsTrustedOverTheRootAlone)
 {
-    osgVis::gen::GenerateOptions options;
-    options.kind = osgVis::gen::SceneKind::Office;
-    options.triangles = 4000;
-    osgVis::gen::PagedOptions paging;
-    paging.tiles = 6;
-    const osgVis::gen::PagedSummary paged =
-        osgVis::gen::writePagedScene(*osgVis::gen::generate(options).root, _dir.string(), paging);
+    const osgVis::gen::PagedSummary paged = osgVis::test::writePagedOffice(_dir.string());
     osg::ref_ptr<osg::Node> whole = osgDB::readRefNodeFile(paged.rootPath);
     ASSERT_TRUE(whole.valid());
     ASSERT_TRUE(osgVis::loadWholeDatabase(*whole).unreadable.empty());

@@ -3,8 +3,8 @@
 // Shadow frustum of an occluder from a point eye (Hudson et al., "Accelerated occlusion culling
 // using shadow frusta", SoCG 1997, §3): the planes through the eye and each edge, and the
 // occluder's own plane. A box wholly outside one of them has no point the occluder hides, so the
-// octree skips Coorg & Teller's eye-independent planes for it (computing them costs a convexity
-// pass and a silhouette search per edge; this is one dot product per plane). The pre-test only
+// octree skips Coorg & Teller's eye-independent planes for it (computing them costs a silhouette
+// search per edge against the box's corners; this is one dot product per plane). The pre-test only
 // ever answers "hides none of it": the Invisible decision stays with classify() and its margins.
 #include <osgVis/core/geometry/Aabb.h>
 #include <osgVis/core/occluders/OccluderPolygon.h>
