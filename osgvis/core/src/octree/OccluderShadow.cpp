@@ -12,6 +12,7 @@ void OccluderShadows::begin(std::size_t polygonCount)
     _added.clear();
     _slots.resize(polygonCount);
     _planes.clear();
+    _normalLengths.clear();
 }
 
 void OccluderShadows::add(std::uint32_t index, const OccluderPolygon& polygon, const Vec3& eye, double margin)
@@ -39,6 +40,8 @@ void OccluderShadows::add(std::uint32_t index, const OccluderPolygon& polygon, c
         if (std::isfinite(edge.d) && edge.normal != Vec3(0.0))
             _planes.push_back(edge);
     }
+    for (std::size_t p = slot.first; p < _planes.size(); ++p)
+        _normalLengths.push_back(glm::length(_planes[p].normal));
     slot.count = std::uint32_t(_planes.size()) - slot.first;
 }
 
@@ -52,13 +55,14 @@ bool OccluderShadows::misses(std::uint32_t index, const Aabb& box) const
     if (slot.empty)
         return true;
     const Vec3 center = box.center(), half = 0.5 * box.extent();
+    const double centerLength = glm::length(center);
     for (std::uint32_t p = slot.first; p < slot.first + slot.count; ++p)
     {
         const Plane& plane = _planes[p];
         const double reach = std::abs(plane.normal.x) * half.x + std::abs(plane.normal.y) * half.y +
                              std::abs(plane.normal.z) * half.z;
         // Strictly outside, by more than the rounding of the distance itself.
-        if (plane.distance(center) + reach < -1e-12 * (std::abs(plane.d) + glm::length(plane.normal) * glm::length(center)))
+        if (plane.distance(center) + reach < -1e-12 * (std::abs(plane.d) + _normalLengths[p] * centerLength))
             return true;
     }
     return false;

@@ -36,5 +36,6 @@ private:
     std::vector<Slot> _slots;
     std::vector<std::uint32_t> _added;
     std::vector<Plane> _planes;
+    std::vector<double> _normalLengths; ///< per plane: |normal|, for the rounding bound in misses()
 };
 } // namespace osgVis::core
