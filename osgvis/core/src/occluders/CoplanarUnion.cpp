@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <map>
 #include <tuple>
 
@@ -21,6 +23,84 @@ struct Group
     bool oneSided = false;
     std::vector<std::uint32_t> members;
 };
+
+struct Piece
+{
+    Outline2 outline;
+    std::vector<std::uint32_t> members; // indices of the polygons it unites
+};
+
+struct PlaneFrame
+{
+    Vec3 origin, u, v;
+    Point2 map(const Vec3& p) const { return {glm::dot(p - origin, u), glm::dot(p - origin, v)}; }
+};
+
+// Interval [lo, hi] along the line (p, unit d) of the outline's corners within `tolerance` of it.
+bool intervalOnLine(const Outline2& outline, const Point2& p, const Point2& d, double tolerance, double& lo, double& hi)
+{
+    std::size_t on = 0;
+    lo = std::numeric_limits<double>::infinity();
+    hi = -lo;
+    for (const Point2& x : outline)
+    {
+        const Point2 r = x - p;
+        if (std::abs(r.x * d.y - r.y * d.x) > tolerance)
+            continue;
+        const double t = glm::dot(r, d);
+        lo = std::min(lo, t);
+        hi = std::max(hi, t);
+        ++on;
+    }
+    return on >= 2;
+}
+
+// Whether the union of a and b draws without a crack where they meet (docs/occluders.md, "Cracks").
+// Overlapping with positive area: every point of either outline inside the union lies inside the
+// other piece. Touching: they meet along one line, and there only exactly shared edges (same two end
+// vertices, linked) may run, or the rasterizer may leave a T-junction's crack open.
+bool meetWatertight(const Piece& a, const Piece& b, const std::vector<OccluderPolygon>& polygons,
+                    const PlaneFrame& frame, double tolerance)
+{
+    const double overlap = signedArea(convexIntersection(a.outline, b.outline));
+    if (overlap > 1e-3 * std::min(signedArea(a.outline), signedArea(b.outline)))
+        return true;
+    std::vector<std::pair<Point2, Point2>> shared;
+    for (std::uint32_t m : a.members)
+    {
+        const OccluderPolygon& polygon = polygons[m];
+        for (std::size_t k = 0; k < polygon.neighbours.size(); ++k)
+            if (std::find(b.members.begin(), b.members.end(), polygon.neighbours[k]) != b.members.end())
+                shared.emplace_back(frame.map(polygon.vertices[k]),
+                                    frame.map(polygon.vertices[(k + 1) % polygon.vertices.size()]));
+    }
+    if (shared.empty())
+        return false;
+    const Point2 p = shared.front().first;
+    const Point2 d = glm::normalize(shared.front().second - p);
+    double loA, hiA, loB, hiB;
+    if (!intervalOnLine(a.outline, p, d, tolerance, loA, hiA) || !intervalOnLine(b.outline, p, d, tolerance, loB, hiB))
+        return false;
+    const double lo = std::max(loA, loB), hi = std::min(hiA, hiB);
+    std::vector<std::pair<double, double>> covered;
+    for (const auto& [from, to] : shared)
+    {
+        const Point2 rf = from - p, rt = to - p;
+        if (std::abs(rf.x * d.y - rf.y * d.x) > tolerance || std::abs(rt.x * d.y - rt.y * d.x) > tolerance)
+            return false; // exact edges on two lines: the pieces overlap after all, or rounding lies
+        const double s = glm::dot(rf, d), t = glm::dot(rt, d);
+        covered.emplace_back(std::min(s, t), std::max(s, t));
+    }
+    std::sort(covered.begin(), covered.end());
+    double reached = lo;
+    for (const auto& [s, t] : covered)
+    {
+        if (s > reached + tolerance)
+            return false; // a stretch of the contact that no shared edge covers
+        reached = std::max(reached, t);
+    }
+    return reached >= hi - tolerance;
+}
 } // namespace
 
 std::vector<OccluderPolygon> coplanarUnions(const std::vector<OccluderPolygon>& polygons, double sceneSize)
@@ -57,11 +137,6 @@ std::vector<OccluderPolygon> coplanarUnions(const std::vector<OccluderPolygon>& 
         const Vec3 v = glm::cross(n, u); // (u, v, n) right-handed: counter-clockwise stays so
         const Vec3 origin = -group.plane.d * n;
 
-        struct Piece
-        {
-            Outline2 outline;
-            std::size_t parts = 1;
-        };
         std::vector<Piece> pieces;
         for (std::uint32_t index : group.members)
         {
@@ -72,9 +147,11 @@ std::vector<OccluderPolygon> coplanarUnions(const std::vector<OccluderPolygon>& 
                 onPlane = onPlane && std::abs(group.plane.distance(p)) <= onPlaneTolerance;
                 piece.outline.push_back({glm::dot(p - origin, u), glm::dot(p - origin, v)});
             }
+            piece.members.push_back(index);
             if (onPlane && signedArea(piece.outline) > 0.0)
                 pieces.push_back(std::move(piece));
         }
+        const PlaneFrame frame{origin, u, v};
 
         for (bool merged = true; merged;)
         {
@@ -84,14 +161,15 @@ std::vector<OccluderPolygon> coplanarUnions(const std::vector<OccluderPolygon>& 
                 {
                     const std::vector<std::size_t> hull =
                         convexUnionIndices(pieces[i].outline, pieces[j].outline, MaxCorners);
-                    if (hull.empty())
+                    if (hull.empty() || !meetWatertight(pieces[i], pieces[j], polygons, frame, onPlaneTolerance))
                         continue;
                     Outline2 joined;
                     for (std::size_t k : hull)
                         joined.push_back(k < pieces[i].outline.size() ? pieces[i].outline[k]
                                                                       : pieces[j].outline[k - pieces[i].outline.size()]);
                     pieces[i].outline = std::move(joined);
-                    pieces[i].parts += pieces[j].parts;
+                    pieces[i].members.insert(pieces[i].members.end(), pieces[j].members.begin(),
+                                             pieces[j].members.end());
                     pieces.erase(pieces.begin() + std::ptrdiff_t(j));
                     --j;
                     merged = true;
@@ -100,7 +178,7 @@ std::vector<OccluderPolygon> coplanarUnions(const std::vector<OccluderPolygon>& 
 
         for (const Piece& piece : pieces)
         {
-            if (piece.parts < 2)
+            if (piece.members.size() < 2)
                 continue;
             OccluderPolygon polygon;
             polygon.plane = group.plane;
