@@ -20,6 +20,7 @@ public:
     explicit ExactReplayModule(std::shared_ptr<ExactReplay::State> state) : _state(std::move(state)) {}
 
     const char* name() const override { return ExactReplay::moduleName(); }
+    bool judgesSlivers() const override { return true; }
     void setScene(const core::Scene& scene) override { _scene = &scene; }
 
     // Never culls a visible object: keeps exactly the oracle's answer for the current view.

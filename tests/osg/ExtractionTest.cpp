@@ -66,6 +66,30 @@ TEST(Extraction, GeodeDrawablesAreObjectsWithExactBounds)
     }
 }
 
+TEST(Extraction, SliverTrianglesAreFlagged)
+{
+    // A face drawn as a fan over its corner list: the plugin's fans of Quake 3 faces keep straight-line
+    // corners, so some fan triangles have three distinct but collinear corners (OpenArena oa_dm1).
+    auto fan = [](const std::vector<osg::Vec3>& corners)
+    {
+        osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
+        geometry->setVertexArray(new osg::Vec3Array(corners.begin(), corners.end()));
+        geometry->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLE_FAN, 0, GLsizei(corners.size())));
+        return geometry;
+    };
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(fan({{0, 0, 0}, {2, 0, 0}, {2, 0, 1}, {0, 0, 1}}));                // a quad
+    geode->addDrawable(fan({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 0, 1}, {0, 0, 1}}));     // (0, 1, 2) collinear
+    geode->addDrawable(fan({{0, 0, 0}, {2, 0, 0}, {2, 0, 1}, {2, 0, 1}, {0, 0, 1}}));     // a repeated corner only
+    geode->addDrawable(fan({{0, 0, 0}, {1, 0, 1e-5f}, {2, 0, 0}, {2, 0, 1}, {0, 0, 1}})); // 1e-5 high over 2
+    const auto extracted = osgVis::extractScene(*geode);
+    ASSERT_EQ(extracted->scene.objects.size(), 4u);
+    EXPECT_FALSE(extracted->scene.objects[0].flags & osgVis::core::OBJECT_SLIVERS);
+    EXPECT_TRUE(extracted->scene.objects[1].flags & osgVis::core::OBJECT_SLIVERS);
+    EXPECT_FALSE(extracted->scene.objects[2].flags & osgVis::core::OBJECT_SLIVERS);
+    EXPECT_TRUE(extracted->scene.objects[3].flags & osgVis::core::OBJECT_SLIVERS);
+}
+
 TEST(Extraction, TrianglesCanBeLeftOut)
 {
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;

@@ -224,6 +224,34 @@ struct TriangleCollector
     }
 };
 
+// Finds a sliver: a triangle with three distinct corners but thinner than SliverRatio of its longest
+// edge. Exactly degenerate ones (a repeated corner) stay degenerate once snapped and draw nothing;
+// a sliver may snap to a sub-pixel triangle whose depth plane is ill-conditioned (docs/occluders.md).
+struct SliverFinder
+{
+    static constexpr double SliverRatio = 1e-4;
+    bool found = false;
+
+    void operator()(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c)
+    {
+        if (found || a == b || b == c || c == a)
+            return;
+        const osg::Vec3d ab = osg::Vec3d(b) - osg::Vec3d(a), ac = osg::Vec3d(c) - osg::Vec3d(a);
+        const osg::Vec3d bc = osg::Vec3d(c) - osg::Vec3d(b);
+        const double longest2 = std::max({ab.length2(), ac.length2(), bc.length2()});
+        const double twiceArea = (ab ^ ac).length();
+        // height = twiceArea / longest < ratio * longest
+        found = std::isfinite(longest2) && twiceArea < SliverRatio * longest2;
+    }
+};
+
+bool hasSlivers(osg::Drawable& drawable)
+{
+    osg::TriangleFunctor<SliverFinder> finder;
+    drawable.accept(finder);
+    return static_cast<const SliverFinder&>(finder).found;
+}
+
 bool transparentState(const osg::StateSet* ss)
 {
     return ss && ((ss->getMode(GL_BLEND) & osg::StateAttribute::ON) ||
@@ -524,6 +552,8 @@ private:
 
         const OccluderEligibility eligibility = occluderEligibility(_nodePath);
         flags |= eligibility.flags;
+        if (hasSlivers(drawable))
+            flags |= core::OBJECT_SLIVERS;
 
         if (const ClusterLayout* layout = layoutFor(drawable))
             if (addClusters(drawable, ref, flags, *layout, eligibility.clockwiseFront))

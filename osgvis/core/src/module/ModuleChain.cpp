@@ -81,7 +81,7 @@ void ModuleChain::sceneReplaced(const Scene& scene, const std::vector<SceneChang
         m->sceneReplaced(scene, changes);
 }
 
-template <class Refine> void ModuleChain::runStages(VisibleSet& visible, Refine refine)
+template <class Refine> void ModuleChain::runStages(VisibleSet& visible, const Frustum* frustum, Refine refine)
 {
     using Clock = std::chrono::steady_clock;
     if (!_scene)
@@ -110,17 +110,26 @@ template <class Refine> void ModuleChain::runStages(VisibleSet& visible, Refine 
         t.visibleAfter = visible.count();
     }
 
+    const bool judgedSlivers = !_modules.empty() && std::all_of(_modules.begin(), _modules.end(),
+                                                                [](const auto& m) { return m->judgesSlivers(); });
+    const std::uint32_t sliverFlag = judgedSlivers ? 0u : std::uint32_t(OBJECT_SLIVERS);
     for (const SceneObject& o : objects)
     {
         const bool removed = o.id < _removed.size() && _removed[o.id];
-        if ((o.flags & OBJECT_ALWAYS_VISIBLE) && !removed && o.id < objects.size())
+        if (removed || o.id >= objects.size())
+            continue;
+        // note: a sliver's pixels may take any depth, so no occluder hides it; the frustum still
+        // does (regions have no single frustum: kept)
+        const bool sliversInView =
+            (o.flags & sliverFlag) && (!frustum || frustum->classify(o.bounds) != Containment::Outside);
+        if ((o.flags & OBJECT_ALWAYS_VISIBLE) || sliversInView)
             visible.set(o.id);
     }
 }
 
 void ModuleChain::cull(const View& view, VisibleSet& visible)
 {
-    runStages(visible, [&](VisibilityModule& module) { module.cull(view, visible); });
+    runStages(visible, &view.frustum, [&](VisibilityModule& module) { module.cull(view, visible); });
 }
 
 bool ModuleChain::supportsRegions() const
@@ -137,7 +146,7 @@ bool ModuleChain::supportsRegions() const
 
 void ModuleChain::cullRegion(const ViewRegion& region, VisibleSet& visible)
 {
-    runStages(visible, [&](VisibilityModule& module) { module.cullRegion(region, visible); });
+    runStages(visible, nullptr, [&](VisibilityModule& module) { module.cullRegion(region, visible); });
 }
 
 std::uint32_t ModuleChain::regionPasses() const
@@ -150,7 +159,7 @@ std::uint32_t ModuleChain::regionPasses() const
 
 void ModuleChain::cullRegionPass(const ViewRegion& region, VisibleSet& visible, std::uint32_t pass)
 {
-    runStages(visible,
+    runStages(visible, nullptr,
               [&](VisibilityModule& module)
               {
                   const std::uint32_t last = std::max<std::uint32_t>(module.regionPasses(), 1) - 1;

@@ -37,7 +37,8 @@ public:
     /// Removed objects are remembered as with sceneChanged.
     void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes);
     /// Starts from every object of the scene (less those reported Removed) and lets each stage refine;
-    /// finally re-adds objects flagged OBJECT_ALWAYS_VISIBLE. Never culls a visible object unless one
+    /// finally re-adds objects flagged OBJECT_ALWAYS_VISIBLE, and those flagged OBJECT_SLIVERS that
+    /// are not outside the view frustum (every one, for regions). Never culls a visible object unless one
     /// of the stages is approximate.
     void cull(const View& view, VisibleSet& visible);
     const std::vector<StageTiming>& lastTimings() const { return _timings; }
@@ -53,8 +54,9 @@ public:
     void cullRegionPass(const ViewRegion& region, VisibleSet& visible, std::uint32_t pass);
 
 private:
-    /// Every object less those reported Removed, then `refine` per stage, then always-visible ones.
-    template <class Refine> void runStages(VisibleSet& visible, Refine refine);
+    /// Every object less those reported Removed, then `refine` per stage, then always-visible ones
+    /// and those with slivers inside `frustum` (null: all of them).
+    template <class Refine> void runStages(VisibleSet& visible, const Frustum* frustum, Refine refine);
     void rememberRemoved(const SceneChange& change);
     std::vector<std::unique_ptr<VisibilityModule>> _modules;
     std::vector<StageTiming> _timings;

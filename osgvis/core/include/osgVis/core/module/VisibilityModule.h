@@ -32,6 +32,9 @@ public:
     virtual const char* name() const = 0;
     /// True when the module may cull visible objects (only modes named `approx`).
     virtual bool approximate() const { return false; }
+    /// True when the answer already holds every object the view shows, slivers included (a replay of
+    /// an oracle): ModuleChain then adds no OBJECT_SLIVERS object back.
+    virtual bool judgesSlivers() const { return false; }
 
     /// Build phase: may allocate and take long. The scene outlives the module or the next setScene.
     virtual void setScene(const Scene& scene) = 0;
