@@ -305,11 +305,21 @@ void CdtModule::cull(const View& view, VisibleSet& visible)
                     }
     };
     // The polygons of a visible object; without depth only when they lie inside `cell` (a cell
-    // every later one is behind), by depth otherwise.
+    // every later one is behind) by more than the depth buffer resolves there, by depth otherwise:
+    // a later object may touch the cell's faces, and where it touches a polygon lying on one (a
+    // floor on a split plane) the two tie in depth and either may be drawn (docs/cdt.md).
     auto drawObject = [&](ObjectId id, const Aabb* cell) {
         for (std::uint32_t index : m.polygonsOf[id])
         {
-            const bool inside = cell && cell->contains(m.polygonBounds[index].min) && cell->contains(m.polygonBounds[index].max);
+            const Aabb& bounds = m.polygonBounds[index];
+            bool inside = false;
+            if (cell)
+            {
+                const Vec3 far = glm::max(glm::abs(bounds.min - view.eye), glm::abs(bounds.max - view.eye));
+                // note: twice the separation along the axis covers rays up to 60 degrees off it
+                const Vec3 clearance(2.0 * m.grid.depthSeparation(glm::length(far)));
+                inside = cell->contains(bounds.min - clearance) && cell->contains(bounds.max + clearance);
+            }
             drawPolygon(index, inside ? cdt::CoverKind::DepthFree : cdt::CoverKind::DepthOnly);
         }
     };

@@ -112,7 +112,10 @@ bool ScreenGrid::set(const View& view, double tolerancePixels)
     _worldToClip = view.projectionMatrix * view.viewMatrix;
     _orthographic = view.orthographic;
     if (_orthographic)
+    {
         _depthMargin = 16.0 * 2.0 / double(1 << 24);
+        _orthographicDepthScale = std::abs(view.projectionMatrix[2][2]);
+    }
     else
     {
         const double n = nearDistance(view);

@@ -14,6 +14,7 @@
 #include <osgVis/core/geometry/Aabb.h>
 #include <osgVis/core/scene/View.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace osgVis::core
@@ -38,6 +39,12 @@ public:
     /// Queried w must exceed a depth bound by this much to count as behind: the depth buffer's
     /// resolution, uniform in w (1/z for a perspective view, NDC depth for an orthographic one).
     double depthMargin() const { return _depthMargin; }
+    /// World distance along the view axis that depthMargin() amounts to at view distance `distance`:
+    /// two surfaces closer than that along a ray may draw in either order.
+    double depthSeparation(double distance) const
+    {
+        return _orthographic ? _depthMargin / std::max(_orthographicDepthScale, 1e-300) : _depthMargin * distance * distance;
+    }
 
     /// The box's outline on the grid (convex, dilated by τ, clipped to the frame grown by τ) and the
     /// largest nearness of its points. False when the box reaches the near plane (its projection
@@ -59,6 +66,7 @@ private:
     bool _orthographic = false;
     double _scaleX = 1.0, _scaleY = 1.0; ///< grid units per NDC unit
     double _unitsPerPixel = 1.0, _tolerance = 0.0, _lattice = 1.0, _depthMargin = 0.0;
+    double _orthographicDepthScale = 1.0; // |d NDC depth / d eye z| of an orthographic view
     std::int32_t _limit = 0, _halfW = 0, _halfH = 0;
 };
 } // namespace osgVis::core
