@@ -16,8 +16,12 @@ namespace
 constexpr double NoValue = -std::numeric_limits<double>::infinity();
 }
 
-void MultifocalZBuffer::reset(const CorrespondencePlane& plane, const Aabb& volume, double margin)
+void MultifocalZBuffer::reset(const CorrespondencePlane& plane, const Aabb& volume, double margin, double nearDistance)
 {
+    // A 24-bit depth buffer resolves z²/(near·2²⁴) along the view axis at distance z; eight steps,
+    // doubled for rays up to 60 degrees off the axis (a gap in h is at least the gap along the ray
+    // times the cosine to the axis): docs/multifocal.md, "Depth ties".
+    _depthGapPerDistance2 = nearDistance > 0.0 ? 2.0 * 8.0 / (nearDistance * double(1 << 24)) : 0.0;
     _plane = plane;
     _corners = boxCorners(volume);
     _volumeMinH = std::numeric_limits<double>::infinity();
@@ -231,12 +235,14 @@ bool MultifocalZBuffer::hidden(const Vec3* points, std::size_t count)
     // The rays from V to the points' hull cross P inside the hull of the projections of every
     // point from every corner (docs/multifocal.md, "Footprint").
     Vec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    double farthest2 = 0.0;
     for (int k = 0; k < 8; ++k)
         for (std::size_t i = 0; i < count; ++i)
         {
             const Vec2 q = _plane.project(_corners[k], points[i]);
             lo = glm::min(lo, q);
             hi = glm::max(hi, q);
+            farthest2 = std::max(farthest2, glm::dot(points[i] - _corners[k], points[i] - _corners[k]));
         }
     const Vec2 windowMax = _plane.windowMax();
     const double slack = _erosion;
@@ -248,7 +254,7 @@ bool MultifocalZBuffer::hidden(const Vec3* points, std::size_t count)
     const int j0 = std::max(0, int(std::floor((lo.y - slack - _plane.origin.y) / _plane.pixel)));
     const int i1 = std::min(_plane.width - 1, int(std::floor((hi.x + slack - _plane.origin.x) / _plane.pixel)));
     const int j1 = std::min(_plane.height - 1, int(std::floor((hi.y + slack - _plane.origin.y) / _plane.pixel)));
-    const double needed = maxH + _margin;
+    const double needed = maxH + _margin + _depthGapPerDistance2 * farthest2;
     for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i)
             if (!(pixelValue(std::size_t(j) * std::size_t(_plane.width) + std::size_t(i)) > needed))

@@ -34,7 +34,9 @@ public:
 
     /// Clears the buffer for `plane` and the view volume `volume` (which must lie on P's positive
     /// side). `margin` (world units) is the slack every comparison keeps against rounding.
-    void reset(const CorrespondencePlane& plane, const Aabb& volume, double margin);
+    /// `nearDistance`: the nearest near plane of a view served (0: unknown), for the depth buffer's
+    /// resolution: a hidden point must lie that much behind its occluder or the two may tie.
+    void reset(const CorrespondencePlane& plane, const Aabb& volume, double margin, double nearDistance = 0.0);
     const CorrespondencePlane& plane() const { return _plane; }
     /// Least h over V: geometry is testable, and may occlude, only where h is below it minus margin.
     double volumeMinH() const { return _volumeMinH; }
@@ -63,6 +65,7 @@ private:
     std::array<Vec3, 8> _corners{};
     std::array<double, 8> _cornerH{};
     double _volumeMinH = 0.0, _margin = 0.0, _erosion = 0.0;
+    double _depthGapPerDistance2 = 0.0; // needed gap in h per squared distance from V (depth resolution)
     std::vector<double> _full;   ///< per pixel: best value of umbrae covering it whole
     std::vector<double> _value;  ///< per pixel: cached answer (full and coverage map)
     std::vector<std::uint8_t> _dirty;

@@ -198,7 +198,9 @@ VolumePvs computeVolumePvs(const Scene& scene, const std::vector<OccluderPolygon
                     placePlane(face, volume, depth, candidateBounds, options.maxWindowAngle, options.planeResolution);
                 if (plane.width <= 0)
                     continue;
-                buffer.reset(plane, volume, margin);
+                // note: nearDistance is the near plane's farthest reach; its distance along the
+                // axis is at least a quarter of it for any field of view up to 150 degrees
+                buffer.reset(plane, volume, margin, 0.25 * options.nearDistance);
                 ++result.statistics.planes;
                 std::uint32_t inserted = 0;
                 for (const FaceOccluder& o : usable)
