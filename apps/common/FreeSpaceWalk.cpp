@@ -100,6 +100,32 @@ std::vector<double> freeDistances(const RayScene& rays, const core::Vec3& eye)
     return distances;
 }
 
+// Views nobody tuned: per station `gazesPerStation` keys, each eye moved by up to a fifth of the eye
+// height along every axis (inside the room the eye finder checked: a quarter eye height to any
+// wall, an eye height to the floor, 1.25 to the ceiling), looking in a direction uniform on the
+// sphere.
+std::vector<core::WalkKey> randomGazeKeys(const std::vector<core::Vec3>& stations, double eyeHeight,
+                                          const FreeSpaceWalkOptions& options, std::mt19937_64& random)
+{
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), turn(0.0, 2.0 * Pi);
+    std::vector<core::WalkKey> keys;
+    double time = 0.0;
+    for (const core::Vec3& station : stations)
+        for (unsigned g = 0; g < std::max(1u, options.gazesPerStation); ++g)
+        {
+            core::WalkKey key;
+            key.time = time;
+            key.eye = station + 0.2 * eyeHeight * core::Vec3(unit(random), unit(random), unit(random));
+            const double z = unit(random), azimuth = turn(random), r = std::sqrt(std::max(0.0, 1.0 - z * z));
+            const core::Vec3 direction(r * std::cos(azimuth), r * std::sin(azimuth), z);
+            key.center = key.eye + eyeHeight * direction;
+            key.up = std::abs(z) > 0.99 ? core::Vec3(0, 1, 0) : core::Vec3(0, 0, 1);
+            keys.push_back(key);
+            time += options.secondsPerKey;
+        }
+    return keys;
+}
+
 // Up to `count` directions (indices of the 16), freest first, at least 60 degrees apart, each with
 // at least `least` free ahead (the freest one whatever it has).
 std::vector<unsigned> freestDirections(const std::vector<double>& distances, unsigned count, double least)
@@ -230,6 +256,11 @@ core::Walk makeFreeSpaceWalk(const RayScene& rays, const FreeSpaceWalkOptions& o
     walk.projection.zFar = 1.05 * diagonal + r.eyeHeight;
     walk.projection.zNear = std::max(walk.projection.zFar * 1e-5, 0.05 * r.eyeHeight);
     double time = 0.0;
+    if (options.randomGaze)
+    {
+        walk.keys = randomGazeKeys(stations, r.eyeHeight, options, random);
+        return walk;
+    }
     for (const core::Vec3& eye : stations)
     {
         const std::vector<double> distances = freeDistances(rays, eye);

@@ -18,7 +18,7 @@
 //  4. Stations spread by farthest-point sampling over the eyes, visited in nearest-neighbour order;
 //     each gives up to `gazesPerStation` keys looking along the horizontal directions (of 16) that
 //     run farthest before meeting geometry, at least 60 degrees apart and at least one eye height
-//     free (the freest one always).
+//     free (the freest one always); or, with randomGaze, random gazes from jittered eyes.
 #include "RayScene.h"
 
 #include <osgVis/core/scene/Walk.h>
@@ -38,6 +38,9 @@ struct FreeSpaceWalkOptions
     std::uint32_t seed = 1;
     double fovYDegrees = 60.0;
     unsigned width = 1280, height = 1024;
+    // Instead of step 4's free directions: gazes uniform on the sphere from eyes jittered by up to a
+    // fifth of the eye height (views nobody tuned, for contract checks).
+    bool randomGaze = false;
 };
 
 struct FreeSpaceWalkReport

@@ -145,7 +145,7 @@ core::Walk orbitWalk(LoadedScene& scene)
 }
 
 // The walk through the model's free space; with `orbitIfNone`, an orbit when it finds no eye.
-core::Walk freeSpaceWalk(LoadedScene& scene, bool orbitIfNone)
+core::Walk freeSpaceWalk(LoadedScene& scene, bool orbitIfNone, bool randomGaze, std::uint32_t seed)
 {
     // note: the walk needs the triangles, which the scene's own extraction leaves out.
     const osg::ref_ptr<ExtractedScene> withTriangles = extractScene(*scene.model, ExtractionOptions{true});
@@ -153,9 +153,18 @@ core::Walk freeSpaceWalk(LoadedScene& scene, bool orbitIfNone)
     {
         const RayScene rays(withTriangles->scene);
         FreeSpaceWalkReport report;
-        core::Walk walk = makeFreeSpaceWalk(rays, {}, &report);
+        FreeSpaceWalkOptions walkOptions;
+        if (randomGaze)
+        {
+            walkOptions.randomGaze = true;
+            walkOptions.seed = seed;
+            walkOptions.stations = 100;
+        }
+        core::Walk walk = makeFreeSpaceWalk(rays, walkOptions, &report);
         std::ostringstream source;
-        source << "automatic walk (" << report.stations << " eyes of " << report.eyes << " found from "
+        source << (randomGaze ? "random gazes (seed " + std::to_string(seed) + ") from the automatic walk's eyes ("
+                              : std::string("automatic walk ("))
+               << report.stations << " eyes of " << report.eyes << " found from "
                << report.candidates << " floor points; eye height " << report.eyeHeight << ": " << report.eyeHeightRule
                << "; rejected " << report.openSky << " under open sky, " << report.lowCeiling << " under low ceilings, "
                << report.nearWall << " next to a wall, " << report.insideSolid << " inside solid geometry, "
@@ -226,8 +235,8 @@ LoadedScene loadScene(const SceneRequest& options)
         if (walkPath.empty())
             walkPath = "auto", walkChosenForUser = true;
     }
-    if (walkPath == "auto")
-        result.walk = freeSpaceWalk(result, walkChosenForUser);
+    if (walkPath == "auto" || walkPath == "random")
+        result.walk = freeSpaceWalk(result, walkChosenForUser, walkPath == "random", options.seed);
     else if (walkPath == "orbit")
         result.walk = orbitWalk(result);
     else if (!walkPath.empty())

@@ -29,9 +29,10 @@ struct SceneRequest
     std::string scenePath;            // any OSG-readable model or a .pvs file; ignored with generateKind
     std::string generateKind;         // a generator kind ("office", "city", ...) or empty
     std::uint64_t triangles = 200000; // size knob of a generated scene
-    std::uint32_t seed = 1;           // seed of a generated scene
+    std::uint32_t seed = 1;           // seed of a generated scene or of a random walk
     std::string forestLayout;         // with generateKind "forest": single, line or dense (empty: dense)
-    // A walk file, "auto" (through the model's free space), "orbit" (around it), or empty: SCENE's
+    // A walk file, "auto" (through the model's free space), "random" (random gazes, seeded by `seed`,
+    // from jittered eyes of that free space), "orbit" (around it), or empty: SCENE's
     // stem + ".walk" if there is one, the generator's walk with generateKind, else "auto" (an orbit
     // when no eye can be found in the model).
     std::string walkPath;
