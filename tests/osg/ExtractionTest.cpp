@@ -81,13 +81,16 @@ TEST(Extraction, SliverTrianglesAreFlagged)
     geode->addDrawable(fan({{0, 0, 0}, {2, 0, 0}, {2, 0, 1}, {0, 0, 1}}));                // a quad
     geode->addDrawable(fan({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 0, 1}, {0, 0, 1}}));     // (0, 1, 2) collinear
     geode->addDrawable(fan({{0, 0, 0}, {2, 0, 0}, {2, 0, 1}, {2, 0, 1}, {0, 0, 1}}));     // a repeated corner only
-    geode->addDrawable(fan({{0, 0, 0}, {1, 0, 1e-5f}, {2, 0, 0}, {2, 0, 1}, {0, 0, 1}})); // 1e-5 high over 2
+    geode->addDrawable(fan({{0, 0, 0}, {1, 0, 1e-4f}, {2, 0, 0}, {2, 0, 1}, {0, 0, 1}})); // thin on purpose
+    // Meant to be collinear, a thousand units out: float storage leaves them 1e-4 off the line.
+    geode->addDrawable(fan({{1000, 0, 0}, {1001, 0, 1e-4f}, {1002, 0, 0}, {1002, 0, 1}, {1000, 0, 1}}));
     const auto extracted = osgVis::extractScene(*geode);
-    ASSERT_EQ(extracted->scene.objects.size(), 4u);
+    ASSERT_EQ(extracted->scene.objects.size(), 5u);
     EXPECT_FALSE(extracted->scene.objects[0].flags & osgVis::core::OBJECT_SLIVERS);
     EXPECT_TRUE(extracted->scene.objects[1].flags & osgVis::core::OBJECT_SLIVERS);
     EXPECT_FALSE(extracted->scene.objects[2].flags & osgVis::core::OBJECT_SLIVERS);
-    EXPECT_TRUE(extracted->scene.objects[3].flags & osgVis::core::OBJECT_SLIVERS);
+    EXPECT_FALSE(extracted->scene.objects[3].flags & osgVis::core::OBJECT_SLIVERS);
+    EXPECT_TRUE(extracted->scene.objects[4].flags & osgVis::core::OBJECT_SLIVERS);
 }
 
 TEST(Extraction, TrianglesCanBeLeftOut)

@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <typeinfo>
 #include <unordered_map>
 
@@ -224,12 +225,12 @@ struct TriangleCollector
     }
 };
 
-// Finds a sliver: a triangle with three distinct corners but thinner than SliverRatio of its longest
-// edge. Exactly degenerate ones (a repeated corner) stay degenerate once snapped and draw nothing;
-// a sliver may snap to a sub-pixel triangle whose depth plane is ill-conditioned (docs/occluders.md).
+// Finds a sliver: a triangle with three distinct corners that lie on one line up to float storage
+// (its height below 10⁻⁶ of its longest edge plus eight float epsilons of its largest coordinate).
+// Exactly degenerate ones (a repeated corner) stay degenerate once snapped and draw nothing; a
+// sliver may snap to a sub-pixel triangle whose depth plane is ill-conditioned (docs/occluders.md).
 struct SliverFinder
 {
-    static constexpr double SliverRatio = 1e-4;
     bool found = false;
 
     void operator()(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c)
@@ -238,10 +239,13 @@ struct SliverFinder
             return;
         const osg::Vec3d ab = osg::Vec3d(b) - osg::Vec3d(a), ac = osg::Vec3d(c) - osg::Vec3d(a);
         const osg::Vec3d bc = osg::Vec3d(c) - osg::Vec3d(b);
-        const double longest2 = std::max({ab.length2(), ac.length2(), bc.length2()});
-        const double twiceArea = (ab ^ ac).length();
-        // height = twiceArea / longest < ratio * longest
-        found = std::isfinite(longest2) && twiceArea < SliverRatio * longest2;
+        const double longest = std::sqrt(std::max({ab.length2(), ac.length2(), bc.length2()}));
+        double largest = 0.0;
+        for (const osg::Vec3& v : {a, b, c})
+            largest = std::max({largest, double(std::abs(v.x())), double(std::abs(v.y())), double(std::abs(v.z()))});
+        const double height = (ab ^ ac).length() / longest;
+        found = std::isfinite(longest) &&
+                height < 1e-6 * longest + 8.0 * double(std::numeric_limits<float>::epsilon()) * largest;
     }
 };
 

@@ -46,8 +46,8 @@ enum ObjectFlags : std::uint32_t
     /// triangles are stored so) or front faces are not drawn, so they hide nothing from that side.
     OBJECT_CULL_BACK = 1u << 5,
     OBJECT_CULL_FRONT = 1u << 6,
-    /// Has a sliver triangle (three distinct corners, yet thinner than 1e-4 of its longest edge,
-    /// e.g. collinear corners in a fan): the rasterizer may give its pixels any depth, so it can
+    /// Has a sliver triangle (three distinct corners on one line up to float storage, e.g.
+    /// collinear corners in a fan): the rasterizer may give its pixels any depth, so it can
     /// show through whatever stands in front (docs/occluders.md, "Sliver triangles"). No module's
     /// occlusion may hide it; ModuleChain keeps it wherever the view frustum may hold it.
     OBJECT_SLIVERS = 1u << 7,
