@@ -17,9 +17,6 @@
 
 #include <osg/Geode>
 #include <osg/MatrixTransform>
-#include <osgUtil/CullVisitor>
-#include <osgUtil/RenderStage>
-#include <osgUtil/StateGraph>
 
 #include <gtest/gtest.h>
 
@@ -30,6 +27,7 @@
 using osgVis::core::ObjectId;
 using osgVis::core::SceneChange;
 using osgVis::test::makeBox;
+using osgVis::test::TestView;
 using Kind = SceneChange::Kind;
 
 namespace
@@ -115,54 +113,6 @@ std::shared_ptr<ChainLog> registerRecorder()
     osgVis::core::registerModule(DynamicRecorder::Name, [log] { return std::make_unique<DynamicRecorder>(log); });
     return log;
 }
-
-// One view: a cull visitor with its own render stage, culling only through osgVis (OSG's own
-// frustum culling is off, so what is drawn is what the VisibilityGroup let through).
-class TestView
-{
-public:
-    TestView() : _cv(new osgUtil::CullVisitor)
-    {
-        _cv->setIdentifier(new osgUtil::CullVisitor::Identifier);
-        _cv->setCullingMode(osg::CullSettings::NO_CULLING);
-        _cv->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
-    }
-
-    // Drawables that reached the render graph.
-    std::set<const osg::Drawable*> draw(osg::Node& root)
-    {
-        osg::ref_ptr<osgUtil::StateGraph> stateGraph = new osgUtil::StateGraph;
-        osg::ref_ptr<osgUtil::RenderStage> stage = new osgUtil::RenderStage;
-        osg::ref_ptr<osg::Viewport> viewport = new osg::Viewport(0, 0, 256, 256);
-        stage->setViewport(viewport);
-        _cv->reset();
-        _cv->setStateGraph(stateGraph);
-        _cv->setRenderStage(stage);
-        _cv->pushViewport(viewport);
-        _cv->pushProjectionMatrix(new osg::RefMatrix(osg::Matrixd::perspective(40.0, 1.0, 0.5, 1000.0)));
-        _cv->pushModelViewMatrix(new osg::RefMatrix(osg::Matrixd::lookAt(osg::Vec3d(0, 0, 0), osg::Vec3d(1, 0, 0),
-                                                                           osg::Vec3d(0, 0, 1))),
-                                 osg::Transform::ABSOLUTE_RF);
-        root.accept(*_cv);
-        _cv->popModelViewMatrix();
-        _cv->popProjectionMatrix();
-        _cv->popViewport();
-        std::set<const osg::Drawable*> drawn;
-        collect(*stateGraph, drawn);
-        return drawn;
-    }
-
-private:
-    static void collect(const osgUtil::StateGraph& graph, std::set<const osg::Drawable*>& drawn)
-    {
-        for (const auto& leaf : graph._leaves)
-            drawn.insert(leaf->getDrawable());
-        for (const auto& child : graph._children)
-            collect(*child.second, drawn);
-    }
-
-    osg::ref_ptr<osgUtil::CullVisitor> _cv;
-};
 
 // Root with three cars: 0 and 1 in view, 2 outside (y = 100).
 struct Street

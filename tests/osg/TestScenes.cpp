@@ -2,6 +2,9 @@
 #include "TestScenes.h"
 
 #include <osg/StateSet>
+#include <osg/Viewport>
+#include <osgUtil/RenderStage>
+#include <osgUtil/StateGraph>
 
 #include <algorithm>
 
@@ -23,6 +26,56 @@ osg::ref_ptr<osg::Geometry> makeBox(const osg::Vec3& min, const osg::Vec3& max, 
     box->addPrimitiveSet(new osg::DrawElementsUShort(GL_TRIANGLES, 36, faces));
     box->getOrCreateStateSet()->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
     return box;
+}
+
+namespace
+{
+void collectDrawn(const osgUtil::StateGraph& graph, std::set<const osg::Drawable*>& drawn)
+{
+    for (const auto& leaf : graph._leaves)
+        drawn.insert(leaf->getDrawable());
+    for (const auto& child : graph._children)
+        collectDrawn(*child.second, drawn);
+}
+} // namespace
+
+TestView::TestView(osgUtil::CullVisitor* cv)
+    : _cv(cv ? cv : new osgUtil::CullVisitor), _frameStamp(new osg::FrameStamp)
+{
+    _cv->setIdentifier(new osgUtil::CullVisitor::Identifier);
+    _cv->setCullingMode(osg::CullSettings::NO_CULLING);
+    _cv->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+}
+
+osg::Matrixd TestView::lookingDownX()
+{
+    return osg::Matrixd::lookAt(osg::Vec3d(0, 0, 0), osg::Vec3d(1, 0, 0), osg::Vec3d(0, 0, 1));
+}
+
+std::set<const osg::Drawable*> TestView::draw(osg::Node& root, const osg::Matrixd& view)
+{
+    osg::ref_ptr<osgUtil::StateGraph> stateGraph = new osgUtil::StateGraph;
+    osg::ref_ptr<osgUtil::RenderStage> stage = new osgUtil::RenderStage;
+    osg::ref_ptr<osg::Viewport> viewport = new osg::Viewport(0, 0, 256, 256);
+    stage->setViewport(viewport);
+    _frameStamp->setFrameNumber(_frames);
+    _frameStamp->setReferenceTime(_frames / 60.0);
+    _frameStamp->setSimulationTime(_frames / 60.0);
+    ++_frames;
+    _cv->reset();
+    _cv->setFrameStamp(_frameStamp);
+    _cv->setStateGraph(stateGraph);
+    _cv->setRenderStage(stage);
+    _cv->pushViewport(viewport);
+    _cv->pushProjectionMatrix(new osg::RefMatrix(osg::Matrixd::perspective(40.0, 1.0, 0.5, 1000.0)));
+    _cv->pushModelViewMatrix(new osg::RefMatrix(view), osg::Transform::ABSOLUTE_RF);
+    root.accept(*_cv);
+    _cv->popModelViewMatrix();
+    _cv->popProjectionMatrix();
+    _cv->popViewport();
+    std::set<const osg::Drawable*> drawn;
+    collectDrawn(*stateGraph, drawn);
+    return drawn;
 }
 
 osg::ref_ptr<osg::GraphicsContext> createTestContext(unsigned width, unsigned height)

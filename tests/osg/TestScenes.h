@@ -1,18 +1,45 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Small hand-built geometry for the adapter tests.
+// Small hand-built geometry and a view without GL for the adapter tests.
 #include <osg/Camera>
+#include <osg/FrameStamp>
 #include <osg/Geometry>
 #include <osg/GraphicsContext>
 #include <osg/Image>
 #include <osg/Vec3>
 #include <osg/Vec4>
+#include <osgUtil/CullVisitor>
+
+#include <set>
 
 namespace osgVis::test
 {
 // Axis-aligned box as 12 indexed triangles, one flat colour, lighting off.
 osg::ref_ptr<osg::Geometry> makeBox(const osg::Vec3& min, const osg::Vec3& max,
                                     const osg::Vec4& colour = osg::Vec4(1, 1, 1, 1));
+
+// One view culled by a bare cull visitor with its own render stage and state graph, no GL. OSG's own
+// culling is off (NO_CULLING), so what is drawn is what osgVis let through: a VisibilityGroup in the
+// graph, or the visitor itself when it is an osgVis::CullVisitor. Each draw is a frame: the frame
+// stamp advances by one frame of 1/60 s, as a viewer's does.
+class TestView
+{
+public:
+    // `cv`: the visitor to cull with (null: a stock osgUtil::CullVisitor); it gets an identifier of
+    // its own, so the view keeps its own state in every VisibilityGroup.
+    explicit TestView(osgUtil::CullVisitor* cv = nullptr);
+
+    // Drawables that reached the render graph when `root` is culled with the view matrix `view`, a
+    // 40° square frustum from 0.5 to 1000 and a 256 × 256 viewport.
+    std::set<const osg::Drawable*> draw(osg::Node& root, const osg::Matrixd& view = lookingDownX());
+    // The eye at the origin looking down +x, z up.
+    static osg::Matrixd lookingDownX();
+
+private:
+    osg::ref_ptr<osgUtil::CullVisitor> _cv;
+    osg::ref_ptr<osg::FrameStamp> _frameStamp;
+    unsigned _frames = 0;
+};
 
 // An offscreen RGBA8 context with a 24-bit depth buffer, double-buffered: a pbuffer, or a small
 // undecorated window where the GLX server has no pbuffers. Null without a display.

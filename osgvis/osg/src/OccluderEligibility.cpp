@@ -24,6 +24,7 @@
 
 #include <osgVis/core/scene/Scene.h>
 
+#include <cstring>
 #include <limits>
 #include <typeinfo>
 
@@ -196,5 +197,59 @@ OccluderEligibility occluderEligibility(const osg::NodePath& path)
             out.flags |= core::OBJECT_CULL_FRONT;
     }
     return out;
+}
+
+namespace
+{
+struct StateKey
+{
+    std::uint64_t value = 1469598103934665603ull;
+    void mix(std::uint64_t v) { value = (value ^ v) * 1099511628211ull; }
+    void mix(const void* p) { mix(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p))); }
+    void mixDouble(double d)
+    {
+        std::uint64_t bits;
+        std::memcpy(&bits, &d, sizeof bits);
+        mix(bits);
+    }
+};
+} // namespace
+
+// note: reads every value DrawnState, the rules above and the extractor's transparency test read, so
+// that a state set edited in place changes the key (docs/changes.md).
+std::uint64_t drawnStateKey(const osg::StateSet& ss)
+{
+    StateKey key;
+    for (GLenum mode : {GLenum(GL_CULL_FACE), GLenum(GL_ALPHA_TEST), GLenum(GL_DEPTH_TEST), GLenum(GL_STENCIL_TEST),
+                        GLenum(GL_BLEND)})
+        key.mix(ss.getMode(mode));
+    for (GLenum plane = GL_CLIP_PLANE0; plane <= GL_CLIP_PLANE5; ++plane)
+        key.mix(ss.getMode(plane));
+    key.mix(static_cast<std::uint64_t>(ss.getRenderingHint()));
+    const auto attribute = [&](osg::StateAttribute::Type type) -> const osg::StateAttribute*
+    {
+        const osg::StateSet::RefAttributePair* pair = ss.getAttributePair(type);
+        key.mix(pair ? pair->first.get() : nullptr);
+        key.mix(pair ? pair->second : 0u);
+        return pair ? pair->first.get() : nullptr;
+    };
+    if (const auto* cull = static_cast<const osg::CullFace*>(attribute(osg::StateAttribute::CULLFACE)))
+        key.mix(cull->getMode());
+    if (const auto* front = static_cast<const osg::FrontFace*>(attribute(osg::StateAttribute::FRONTFACE)))
+        key.mix(front->getMode());
+    if (const auto* polygon = static_cast<const osg::PolygonMode*>(attribute(osg::StateAttribute::POLYGONMODE)))
+    {
+        key.mix(polygon->getMode(osg::PolygonMode::FRONT));
+        key.mix(polygon->getMode(osg::PolygonMode::BACK));
+    }
+    if (const auto* depth = static_cast<const osg::Depth*>(attribute(osg::StateAttribute::DEPTH)))
+    {
+        key.mix(depth->getFunction());
+        key.mix(depth->getWriteMask());
+        key.mixDouble(depth->getZNear());
+        key.mixDouble(depth->getZFar());
+    }
+    attribute(osg::StateAttribute::PROGRAM);
+    return key.value;
 }
 } // namespace osgVis

@@ -18,4 +18,8 @@ struct OccluderEligibility
 
 // `path` runs from the extraction root down to and including the drawable.
 OccluderEligibility occluderEligibility(const osg::NodePath& path);
+
+// A hash of everything in `ss` that occluderEligibility and the extractor's transparency flag read
+// (modes, the attributes' values, the rendering hint): equal keys, same flags.
+std::uint64_t drawnStateKey(const osg::StateSet& ss);
 } // namespace osgVis

@@ -2,6 +2,7 @@
 #include <osgVis/ViewCuller>
 
 #include "PagingPolicy.h"
+#include "SceneWatch.h"
 
 #include <osgVis/core/api/ModuleRegistry.h>
 #include <osgVis/core/scene/View.h>
@@ -77,7 +78,7 @@ std::shared_ptr<const core::Scene> sharedScene(const osg::ref_ptr<const Extracte
 }
 } // namespace
 
-ViewCuller::ViewCuller(const std::string& modes)
+ViewCuller::ViewCuller(const std::string& modes) : _watch(std::make_unique<SceneWatch>())
 {
     setModes(modes);
 }
@@ -195,6 +196,12 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         std::lock_guard<std::mutex> lock(_mutex);
         paging = _pagingOptions;
         const bool extract = !_scene || _root.get() != &root;
+        const unsigned frame = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : ~0u;
+        // note: the application changes the graph in update, before every view's cull, so one
+        // comparison a frame suffices; without frame stamps every cull compares
+        if (!extract && !_dirty && (frame == ~0u || frame != _watchedFrame))
+            _dirty = _watch->changed();
+        _watchedFrame = frame;
         // note: a paged node whose child count changed was merged into or expired by the pager; only
         // its children are extracted again, unless the whole root is dirty anyway
         const bool paged = !extract && !_dirty && _scene->pagedNodesChanged();
@@ -207,6 +214,8 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         else if (reextract)
             _scene = reextractScene(root, *_scene, _extractionOptions);
         extracted = extract || reextract;
+        if (extracted)
+            _watch->record(root);
         if (extracted)
             modes = _modes;
         _root = &root;

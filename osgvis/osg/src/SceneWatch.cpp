@@ -1,0 +1,320 @@
+// SPDX-License-Identifier: MIT
+#include "SceneWatch.h"
+
+#include "CullingContext.h"
+#include "OccluderEligibility.h"
+#include "PagedNodeCulling.h"
+
+#include <osgVis/Cell>
+#include <osgVis/Occluder>
+#include <osgVis/Portal>
+#include <osgVis/VisibilityGroup>
+
+#include <osg/AutoTransform>
+#include <osg/Geode>
+#include <osg/Geometry>
+#include <osg/MatrixTransform>
+#include <osg/PagedLOD>
+#include <osg/PositionAttitudeTransform>
+#include <osg/ProxyNode>
+
+#include <algorithm>
+#include <cstring>
+#include <typeinfo>
+#include <unordered_set>
+
+namespace osgVis
+{
+namespace
+{
+struct Hash
+{
+    std::uint64_t value = 1469598103934665603ull;
+    void mix(std::uint64_t v) { value = (value ^ v) * 1099511628211ull; }
+    void mix(const void* p) { mix(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p))); }
+    void mix(double d)
+    {
+        std::uint64_t bits;
+        std::memcpy(&bits, &d, sizeof bits);
+        mix(bits);
+    }
+    void mix(const std::string& s)
+    {
+        for (char c : s)
+            mix(static_cast<std::uint64_t>(static_cast<unsigned char>(c)));
+        mix(std::uint64_t(s.size()));
+    }
+    void mix(const std::vector<osg::Vec3d>& polygon)
+    {
+        for (const osg::Vec3d& v : polygon)
+            for (int i = 0; i < 3; ++i)
+                mix(v[i]);
+        mix(std::uint64_t(polygon.size()));
+    }
+};
+
+// The cull callback the application set: osgVis's own callbacks wrap it.
+const osg::Callback* applicationCullCallback(const osg::Node& node)
+{
+    const osg::Callback* callback = node.getCullCallback();
+    if (const auto* own = dynamic_cast<const VisibilityCullCallback*>(callback))
+        return own->getChained();
+    if (dynamic_cast<const PagedNodeCullCallback*>(callback))
+        return callback->getNestedCallback();
+    return callback;
+}
+
+bool pagedNode(const osg::Node& node)
+{
+    return dynamic_cast<const osg::PagedLOD*>(&node) || dynamic_cast<const osg::ProxyNode*>(&node);
+}
+
+// Types whose traversal enters every child whose mask is valid: their children list says it all.
+bool entersEveryChild(const osg::Node& node)
+{
+    const std::type_info& t = typeid(node);
+    return t == typeid(osg::Group) || t == typeid(osg::Geode) || t == typeid(osg::MatrixTransform) ||
+           t == typeid(osg::PositionAttitudeTransform) || t == typeid(VisibilityGroup) || t == typeid(Occluder) ||
+           t == typeid(Cell) || t == typeid(Portal);
+}
+
+// Placed at cull time (absolute frame, screen-aligned): the extraction keeps their objects visible
+// whatever the matrix reads, which may change every frame.
+bool placedAtCull(const osg::Transform& transform)
+{
+    return transform.getReferenceFrame() != osg::Transform::RELATIVE_RF ||
+           dynamic_cast<const osg::AutoTransform*>(&transform) != nullptr;
+}
+
+osg::Matrixd localMatrix(const osg::Transform& transform)
+{
+    if (typeid(transform) == typeid(osg::MatrixTransform))
+        return static_cast<const osg::MatrixTransform&>(transform).getMatrix();
+    osg::Matrixd matrix;
+    transform.computeLocalToWorldMatrix(matrix, nullptr);
+    return matrix;
+}
+
+bool sameMatrix(const osg::Matrixd& a, const osg::Matrixd& b)
+{
+    return std::memcmp(a.ptr(), b.ptr(), sizeof(double) * 16) == 0;
+}
+
+std::uint64_t geometryKey(const osg::Drawable& drawable)
+{
+    Hash hash;
+    hash.mix(drawable.getDrawCallback());
+    hash.mix(drawable.getComputeBoundingBoxCallback());
+    if (const osg::Geometry* geometry = drawable.asGeometry())
+    {
+        const osg::Array* vertices = geometry->getVertexArray();
+        hash.mix(vertices);
+        hash.mix(std::uint64_t(vertices ? vertices->getModifiedCount() : 0u));
+        hash.mix(std::uint64_t(vertices ? vertices->getNumElements() : 0u));
+        for (unsigned i = 0; i < geometry->getNumPrimitiveSets(); ++i)
+        {
+            const osg::PrimitiveSet* set = geometry->getPrimitiveSet(i);
+            hash.mix(set);
+            hash.mix(std::uint64_t(set->getMode()));
+            hash.mix(std::uint64_t(set->getModifiedCount()));
+            hash.mix(std::uint64_t(set->getNumIndices()));
+            if (const auto* arrays = dynamic_cast<const osg::DrawArrays*>(set))
+                hash.mix(std::uint64_t(arrays->getFirst()));
+        }
+    }
+    return hash.value;
+}
+
+std::uint64_t markerKey(const osg::Node& node)
+{
+    Hash hash;
+    if (const auto* occluder = dynamic_cast<const Occluder*>(&node))
+        for (const Occluder::Polygon& polygon : occluder->getPolygons())
+            hash.mix(polygon);
+    else if (const auto* cell = dynamic_cast<const Cell*>(&node))
+    {
+        hash.mix(cell->getName());
+        for (int corner = 0; corner < 8; ++corner)
+            for (int i = 0; i < 3; ++i)
+                hash.mix(cell->getBounds().corner(corner)[i]);
+    }
+    else if (const auto* portal = dynamic_cast<const Portal*>(&node))
+    {
+        hash.mix(portal->getPolygon());
+        hash.mix(portal->getCellA());
+        hash.mix(portal->getCellB());
+    }
+    return hash.value;
+}
+
+bool marker(const osg::Node& node)
+{
+    return dynamic_cast<const Occluder*>(&node) || dynamic_cast<const Cell*>(&node) ||
+           dynamic_cast<const Portal*>(&node);
+}
+
+// Lists the children an active traversal of one group enters, without going deeper.
+class SelectionProbe : public osg::NodeVisitor
+{
+public:
+    SelectionProbe() : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN) {}
+    std::vector<const osg::Node*>* out = nullptr;
+    void apply(osg::Node& node) override { out->push_back(&node); }
+};
+
+void probe(osg::Group& group, std::vector<const osg::Node*>& out)
+{
+    thread_local osg::ref_ptr<SelectionProbe> probe = new SelectionProbe;
+    probe->out = &out;
+    group.traverse(*probe);
+}
+} // namespace
+
+class SceneWatchRecorder : public osg::NodeVisitor
+{
+public:
+    explicit SceneWatchRecorder(SceneWatch& watch) : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN), _watch(watch) {}
+
+    void apply(osg::Node& node) override
+    {
+        record(node);
+        traverse(node);
+    }
+
+private:
+    void record(osg::Node& node)
+    {
+        hold(&node);
+        SceneWatch::NodeEntry entry{&node,
+                                    node.getStateSet(),
+                                    applicationCullCallback(node),
+                                    node.getDataVariance(),
+                                    false,
+                                    static_cast<std::uint32_t>(_watch._children.size()),
+                                    0};
+        hold(entry.stateSet);
+        hold(entry.cullCallback);
+        osg::Group* group = node.asGroup();
+        if (group && !pagedNode(node))
+        {
+            for (unsigned i = 0; i < group->getNumChildren(); ++i)
+            {
+                osg::Node* child = group->getChild(i);
+                hold(child);
+                _watch._children.push_back({child, child->getNodeMask()});
+            }
+            entry.listsChildren = true;
+            entry.childCount = group->getNumChildren();
+            if (!entersEveryChild(node))
+                recordSelection(*group);
+        }
+        _watch._nodes.push_back(entry);
+        if (entry.stateSet && _states.insert(entry.stateSet).second)
+            _watch._states.push_back({entry.stateSet, drawnStateKey(*entry.stateSet)});
+        if (const osg::Transform* transform = node.asTransform(); transform && !placedAtCull(*transform))
+            _watch._transforms.push_back({transform, localMatrix(*transform)});
+        if (const osg::Drawable* drawable = node.asDrawable())
+            recordDrawable(*drawable);
+        if (marker(node))
+            _watch._markers.push_back({&node, markerKey(node)});
+    }
+
+    void recordSelection(osg::Group& group)
+    {
+        const auto first = static_cast<std::uint32_t>(_watch._selected.size());
+        probe(group, _watch._selected);
+        _watch._selections.push_back({&group, first, static_cast<std::uint32_t>(_watch._selected.size()) - first});
+    }
+
+    void recordDrawable(const osg::Drawable& drawable)
+    {
+        if (const osg::Geometry* geometry = drawable.asGeometry())
+        {
+            hold(geometry->getVertexArray());
+            for (unsigned i = 0; i < geometry->getNumPrimitiveSets(); ++i)
+                hold(geometry->getPrimitiveSet(i));
+        }
+        hold(drawable.getDrawCallback());
+        hold(drawable.getComputeBoundingBoxCallback());
+        _watch._drawables.push_back({&drawable, drawable.getBoundingBox(), geometryKey(drawable)});
+    }
+
+    void hold(const osg::Referenced* object)
+    {
+        if (object)
+            _watch._held.emplace_back(object);
+    }
+
+    SceneWatch& _watch;
+    std::unordered_set<const osg::StateSet*> _states;
+};
+
+void SceneWatch::clear()
+{
+    _nodes.clear();
+    _children.clear();
+    _selections.clear();
+    _selected.clear();
+    _transforms.clear();
+    _drawables.clear();
+    _states.clear();
+    _markers.clear();
+    _held.clear();
+}
+
+void SceneWatch::record(osg::Node& root)
+{
+    clear();
+    SceneWatchRecorder recorder(*this);
+    root.accept(recorder);
+}
+
+bool SceneWatch::changed() const
+{
+    for (const NodeEntry& entry : _nodes)
+    {
+        const osg::Node& node = *entry.node;
+        if (node.getStateSet() != entry.stateSet || node.getDataVariance() != entry.variance ||
+            applicationCullCallback(node) != entry.cullCallback)
+            return true;
+        if (!entry.listsChildren)
+            continue;
+        const osg::Group& group = *node.asGroup();
+        if (group.getNumChildren() != entry.childCount)
+            return true;
+        const ChildEntry* recorded = _children.data() + entry.firstChild;
+        for (unsigned i = 0; i < entry.childCount; ++i)
+        {
+            const osg::Node* child = group.getChild(i);
+            if (child != recorded[i].child || child->getNodeMask() != recorded[i].mask)
+                return true;
+        }
+    }
+    for (const TransformEntry& entry : _transforms)
+        if (!sameMatrix(localMatrix(*entry.transform), entry.matrix))
+            return true;
+    for (const DrawableEntry& entry : _drawables)
+    {
+        const osg::BoundingBox& box = entry.drawable->getBoundingBox();
+        if (box._min != entry.box._min || box._max != entry.box._max ||
+            geometryKey(*entry.drawable) != entry.geometryKey)
+            return true;
+    }
+    for (const KeyEntry& entry : _states)
+        if (drawnStateKey(*static_cast<const osg::StateSet*>(entry.object)) != entry.key)
+            return true;
+    for (const KeyEntry& entry : _markers)
+        if (markerKey(*static_cast<const osg::Node*>(entry.object)) != entry.key)
+            return true;
+    thread_local std::vector<const osg::Node*> selected;
+    for (const SelectionEntry& entry : _selections)
+    {
+        selected.clear();
+        probe(*entry.group, selected);
+        if (selected.size() != entry.count ||
+            !std::equal(selected.begin(), selected.end(), _selected.begin() + entry.first))
+            return true;
+    }
+    return false;
+}
+} // namespace osgVis

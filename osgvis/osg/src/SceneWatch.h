@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Internal: how a ViewCuller finds, at each cull, that the subgraph it extracted has changed although
+// nobody called dirtyScene(). OSG tells no one about changes, so right after an extraction the watch
+// records everything the extraction read (per node: children and their masks, the children an active
+// traversal enters, matrices, state, drawables' bounds and geometry counters), and each cull compares
+// it again in flat arrays (docs/changes.md lists what is watched and why).
+#include <osg/BoundingBox>
+#include <osg/Matrixd>
+#include <osg/Node>
+#include <osg/ref_ptr>
+
+#include <cstdint>
+#include <vector>
+
+namespace osgVis
+{
+class SceneWatch
+{
+public:
+    /// Records `root`'s subgraph as the extractor traverses it: active children, a paged node's
+    /// children as loaded (the count of those is ExtractedScene::pagedNodesChanged's to watch).
+    void record(osg::Node& root);
+    /// True when something recorded reads differently now; false when nothing is recorded.
+    bool changed() const;
+    void clear();
+    /// What is watched, for statistics and benchmarks.
+    std::size_t nodeCount() const { return _nodes.size(); }
+
+private:
+    friend class SceneWatchRecorder;
+
+    struct NodeEntry
+    {
+        const osg::Node* node;
+        const osg::StateSet* stateSet;
+        const osg::Callback* cullCallback; ///< the application's, below osgVis's own
+        osg::Object::DataVariance variance;
+        bool listsChildren;                   ///< a group's children are listed; a paged node's are not (the pager's)
+        std::uint32_t firstChild, childCount; ///< in _children
+    };
+    struct ChildEntry
+    {
+        const osg::Node* child;
+        osg::Node::NodeMask mask;
+    };
+    /// A group whose cull traversal may enter only some of its children (Switch, LOD, Sequence, any
+    /// type the kit does not know): the children an active traversal entered.
+    struct SelectionEntry
+    {
+        osg::Group* group;
+        std::uint32_t first, count; ///< in _selected
+    };
+    struct TransformEntry
+    {
+        const osg::Transform* transform;
+        osg::Matrixd matrix; ///< local to parent
+    };
+    struct DrawableEntry
+    {
+        const osg::Drawable* drawable;
+        osg::BoundingBox box;
+        std::uint64_t geometryKey; ///< arrays, primitive sets, their modified counts, callbacks
+    };
+    struct KeyEntry
+    {
+        const osg::Referenced* object; ///< a state set or an osgVis marker node
+        std::uint64_t key;
+    };
+
+    std::vector<NodeEntry> _nodes;
+    std::vector<ChildEntry> _children;
+    std::vector<SelectionEntry> _selections;
+    std::vector<const osg::Node*> _selected;
+    std::vector<TransformEntry> _transforms;
+    std::vector<DrawableEntry> _drawables;
+    std::vector<KeyEntry> _states, _markers;
+    /// Everything above is held, so that no address compared is ever reused by a new object.
+    std::vector<osg::ref_ptr<const osg::Referenced>> _held;
+};
+} // namespace osgVis
