@@ -163,7 +163,9 @@ protected:
         root->addChild(car.transform);
         const Frames before = draw();
         if (cullsOutsideTheFrustum())
+        {
             EXPECT_FALSE(before.drewAny(car.box)) << "behind the eye";
+        }
 
         car.transform->setMatrix(osg::Matrixd::translate(Centre));
         EXPECT_TRUE(draw().drewEvery(car.box)) << "moved into the view's centre";
@@ -171,7 +173,9 @@ protected:
         car.transform->setMatrix(osg::Matrixd::translate(BehindEye));
         const Frames after = draw();
         if (cullsOutsideTheFrustum())
+        {
             EXPECT_FALSE(after.drewAny(car.box)) << "moved behind the eye again";
+        }
     }
 
     struct WallScene
@@ -208,7 +212,9 @@ protected:
         const Frames after = draw();
         expectUncovered(after, scene);
         if (cullsOutsideTheFrustum())
+        {
             EXPECT_FALSE(after.drewAny(scene.wall.box)) << "the wall, out of view";
+        }
     }
 
     osg::ref_ptr<osg::Group> root; // the VisibilityGroup, or a plain group for osgVis::CullVisitor
@@ -262,7 +268,9 @@ TEST_P(UnnotifiedChanges, VerticesEditedInPlaceIntoViewAreDrawn)
     root->addChild(geodeOf(box));
     const Frames before = draw();
     if (cullsOutsideTheFrustum())
+    {
         EXPECT_FALSE(before.drewAny(box)) << "behind the eye";
+    }
 
     auto* vertices = static_cast<osg::Vec3Array*>(box->getVertexArray());
     for (osg::Vec3& vertex : *vertices)
@@ -314,7 +322,9 @@ TEST_P(UnnotifiedChanges, ObjectMovedOutFromBehindTheWallIsDrawn)
     mover->setPosition(BehindTheWall[0]);
     const Frames back = draw(); // hidden again for the occlusion modes; frustum culling keeps it
     if (std::string(GetParam()) == "frustum")
+    {
         EXPECT_TRUE(back.drewEvery(box)) << "behind the wall, in view";
+    }
 }
 
 // 6. The wall (an occluder) moved out of view.

@@ -97,29 +97,46 @@ osg::Matrixd localMatrix(const osg::Transform& transform)
 
 bool sameMatrix(const osg::Matrixd& a, const osg::Matrixd& b)
 {
-    return std::memcmp(a.ptr(), b.ptr(), sizeof(double) * 16) == 0;
+    const double* x = a.ptr();
+    const double* y = b.ptr();
+    bool same = true;
+    for (int i = 0; i < 16; ++i)
+        same &= x[i] == y[i];
+    return same;
 }
 
-std::uint64_t geometryKey(const osg::Drawable& drawable)
+bool anyDrawArrays(const osg::Geometry* geometry)
+{
+    if (geometry)
+        for (const osg::ref_ptr<osg::PrimitiveSet>& set : geometry->getPrimitiveSetList())
+            if (set->getType() == osg::PrimitiveSet::DrawArraysPrimitiveType)
+                return true;
+    return false;
+}
+
+// note: OSG sends a changed array or index list to the GPU only after its dirty(), which counts up
+// its modified count, so the counts stand for the contents; a primitive set's mode and DrawArrays'
+// first and count are read at each draw, so they are compared themselves.
+std::uint64_t geometryKey(const osg::Drawable& drawable, const osg::Geometry* geometry, bool drawArrays)
 {
     Hash hash;
     hash.mix(drawable.getDrawCallback());
     hash.mix(drawable.getComputeBoundingBoxCallback());
-    if (const osg::Geometry* geometry = drawable.asGeometry())
+    if (!geometry)
+        return hash.value;
+    const osg::Array* vertices = geometry->getVertexArray();
+    hash.mix(vertices);
+    hash.mix(std::uint64_t(vertices ? vertices->getModifiedCount() : 0u));
+    const osg::Geometry::PrimitiveSetList& sets = geometry->getPrimitiveSetList();
+    hash.mix(std::uint64_t(sets.size()));
+    for (const osg::ref_ptr<osg::PrimitiveSet>& set : sets)
     {
-        const osg::Array* vertices = geometry->getVertexArray();
-        hash.mix(vertices);
-        hash.mix(std::uint64_t(vertices ? vertices->getModifiedCount() : 0u));
-        hash.mix(std::uint64_t(vertices ? vertices->getNumElements() : 0u));
-        for (unsigned i = 0; i < geometry->getNumPrimitiveSets(); ++i)
+        hash.mix(set.get());
+        hash.mix((std::uint64_t(set->getModifiedCount()) << 32) | set->getMode());
+        if (drawArrays && set->getType() == osg::PrimitiveSet::DrawArraysPrimitiveType)
         {
-            const osg::PrimitiveSet* set = geometry->getPrimitiveSet(i);
-            hash.mix(set);
-            hash.mix(std::uint64_t(set->getMode()));
-            hash.mix(std::uint64_t(set->getModifiedCount()));
-            hash.mix(std::uint64_t(set->getNumIndices()));
-            if (const auto* arrays = dynamic_cast<const osg::DrawArrays*>(set))
-                hash.mix(std::uint64_t(arrays->getFirst()));
+            const auto& arrays = static_cast<const osg::DrawArrays&>(*set);
+            hash.mix((std::uint64_t(std::uint32_t(arrays.getFirst())) << 32) | std::uint32_t(arrays.getCount()));
         }
     }
     return hash.value;
@@ -188,12 +205,15 @@ private:
         SceneWatch::NodeEntry entry{&node,
                                     node.getStateSet(),
                                     applicationCullCallback(node),
+                                    node.getCullCallback(),
                                     node.getDataVariance(),
                                     false,
                                     static_cast<std::uint32_t>(_watch._children.size()),
-                                    0};
+                                    0,
+                                    SceneWatch::None,
+                                    SceneWatch::None};
         hold(entry.stateSet);
-        hold(entry.cullCallback);
+        hold(entry.seenCallback);
         osg::Group* group = node.asGroup();
         if (group && !pagedNode(node))
         {
@@ -208,13 +228,19 @@ private:
             if (!entersEveryChild(node))
                 recordSelection(*group);
         }
-        _watch._nodes.push_back(entry);
         if (entry.stateSet && _states.insert(entry.stateSet).second)
             _watch._states.push_back({entry.stateSet, drawnStateKey(*entry.stateSet)});
         if (const osg::Transform* transform = node.asTransform(); transform && !placedAtCull(*transform))
-            _watch._transforms.push_back({transform, localMatrix(*transform)});
+        {
+            entry.transform = static_cast<std::uint32_t>(_watch._transforms.size());
+            _watch._transforms.push_back({localMatrix(*transform)});
+        }
         if (const osg::Drawable* drawable = node.asDrawable())
+        {
+            entry.drawable = static_cast<std::uint32_t>(_watch._drawables.size());
             recordDrawable(*drawable);
+        }
+        _watch._nodes.push_back(entry);
         if (marker(node))
             _watch._markers.push_back({&node, markerKey(node)});
     }
@@ -236,7 +262,10 @@ private:
         }
         hold(drawable.getDrawCallback());
         hold(drawable.getComputeBoundingBoxCallback());
-        _watch._drawables.push_back({&drawable, drawable.getBoundingBox(), geometryKey(drawable)});
+        const osg::Geometry* geometry = drawable.asGeometry();
+        const bool drawArrays = anyDrawArrays(geometry);
+        _watch._drawables.push_back(
+            {drawable.getBoundingBox(), geometry, drawArrays, geometryKey(drawable, geometry, drawArrays)});
     }
 
     void hold(const osg::Referenced* object)
@@ -269,16 +298,21 @@ void SceneWatch::record(osg::Node& root)
     root.accept(recorder);
 }
 
-bool SceneWatch::changed() const
+// One node's own fields, its children, its matrix and its geometry, read in one visit.
+bool SceneWatch::nodeChanged(const NodeEntry& entry) const
 {
-    for (const NodeEntry& entry : _nodes)
+    const osg::Node& node = *entry.node;
+    if (node.getStateSet() != entry.stateSet || node.getDataVariance() != entry.variance)
+        return true;
+    if (const osg::Callback* callback = node.getCullCallback(); callback != entry.seenCallback)
     {
-        const osg::Node& node = *entry.node;
-        if (node.getStateSet() != entry.stateSet || node.getDataVariance() != entry.variance ||
-            applicationCullCallback(node) != entry.cullCallback)
+        if (applicationCullCallback(node) != entry.cullCallback)
             return true;
-        if (!entry.listsChildren)
-            continue;
+        entry.seenCallback = callback;
+        _held.emplace_back(callback); // its address is compared from now on
+    }
+    if (entry.listsChildren)
+    {
         const osg::Group& group = *node.asGroup();
         if (group.getNumChildren() != entry.childCount)
             return true;
@@ -290,14 +324,33 @@ bool SceneWatch::changed() const
                 return true;
         }
     }
-    for (const TransformEntry& entry : _transforms)
-        if (!sameMatrix(localMatrix(*entry.transform), entry.matrix))
-            return true;
-    for (const DrawableEntry& entry : _drawables)
+    if (entry.transform != None && !sameMatrix(localMatrix(*node.asTransform()), _transforms[entry.transform].matrix))
+        return true;
+    if (entry.drawable != None)
     {
-        const osg::BoundingBox& box = entry.drawable->getBoundingBox();
-        if (box._min != entry.box._min || box._max != entry.box._max ||
-            geometryKey(*entry.drawable) != entry.geometryKey)
+        const DrawableEntry& recorded = _drawables[entry.drawable];
+        const osg::BoundingBox& box = node.asDrawable()->getBoundingBox();
+        if (box._min != recorded.box._min || box._max != recorded.box._max ||
+            geometryKey(*node.asDrawable(), recorded.geometry, recorded.drawArrays) != recorded.geometryKey)
+            return true;
+    }
+    return false;
+}
+
+bool SceneWatch::changed() const
+{
+    // note: the nodes lie scattered in memory; fetching a few entries ahead overlaps the misses
+    constexpr std::size_t Ahead = 8;
+    for (std::size_t i = 0; i < _nodes.size(); ++i)
+    {
+        if (i + Ahead < _nodes.size())
+        {
+            const char* ahead = reinterpret_cast<const char*>(_nodes[i + Ahead].node);
+            __builtin_prefetch(ahead);
+            __builtin_prefetch(ahead + 64);
+            __builtin_prefetch(ahead + 128);
+        }
+        if (nodeChanged(_nodes[i]))
             return true;
     }
     for (const KeyEntry& entry : _states)

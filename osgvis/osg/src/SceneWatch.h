@@ -6,6 +6,7 @@
 // traversal enters, matrices, state, drawables' bounds and geometry counters), and each cull compares
 // it again in flat arrays (docs/changes.md lists what is watched and why).
 #include <osg/BoundingBox>
+#include <osg/Geometry>
 #include <osg/Matrixd>
 #include <osg/Node>
 #include <osg/ref_ptr>
@@ -21,7 +22,8 @@ public:
     /// Records `root`'s subgraph as the extractor traverses it: active children, a paged node's
     /// children as loaded (the count of those is ExtractedScene::pagedNodesChanged's to watch).
     void record(osg::Node& root);
-    /// True when something recorded reads differently now; false when nothing is recorded.
+    /// True when something recorded reads differently now; false when nothing is recorded. Not
+    /// thread-safe: one caller at a time (it notes callbacks osgVis installed since the recording).
     bool changed() const;
     void clear();
     /// What is watched, for statistics and benchmarks.
@@ -29,15 +31,20 @@ public:
 
 private:
     friend class SceneWatchRecorder;
+    static constexpr std::uint32_t None = ~0u;
 
     struct NodeEntry
     {
         const osg::Node* node;
         const osg::StateSet* stateSet;
         const osg::Callback* cullCallback; ///< the application's, below osgVis's own
+        /// The callback last found on the node that leads to cullCallback (osgVis's own installs
+        /// after the recording): compared first, as a pointer.
+        mutable const osg::Callback* seenCallback;
         osg::Object::DataVariance variance;
         bool listsChildren;                   ///< a group's children are listed; a paged node's are not (the pager's)
         std::uint32_t firstChild, childCount; ///< in _children
+        std::uint32_t transform, drawable;    ///< in _transforms, _drawables, or None
     };
     struct ChildEntry
     {
@@ -53,20 +60,22 @@ private:
     };
     struct TransformEntry
     {
-        const osg::Transform* transform;
         osg::Matrixd matrix; ///< local to parent
     };
     struct DrawableEntry
     {
-        const osg::Drawable* drawable;
         osg::BoundingBox box;
-        std::uint64_t geometryKey; ///< arrays, primitive sets, their modified counts, callbacks
+        const osg::Geometry* geometry; ///< the drawable as a Geometry (null when it is none)
+        bool drawArrays;               ///< some primitive set is a DrawArrays
+        std::uint64_t geometryKey;     ///< arrays, primitive sets, their modified counts, callbacks
     };
     struct KeyEntry
     {
         const osg::Referenced* object; ///< a state set or an osgVis marker node
         std::uint64_t key;
     };
+
+    bool nodeChanged(const NodeEntry& entry) const;
 
     std::vector<NodeEntry> _nodes;
     std::vector<ChildEntry> _children;
@@ -76,6 +85,6 @@ private:
     std::vector<DrawableEntry> _drawables;
     std::vector<KeyEntry> _states, _markers;
     /// Everything above is held, so that no address compared is ever reused by a new object.
-    std::vector<osg::ref_ptr<const osg::Referenced>> _held;
+    mutable std::vector<osg::ref_ptr<const osg::Referenced>> _held;
 };
 } // namespace osgVis
