@@ -12,9 +12,7 @@
 #include "ModePass.h"
 #include "OracleReference.h"
 
-#include <osgVis/VisibilityGroup>
 
-#include <osg/NodeVisitor>
 
 #include <iostream>
 #include <stdexcept>
@@ -23,24 +21,6 @@ namespace osgVis::bench
 {
 namespace
 {
-// The graph's VisibilityGroups, which must re-extract after each change.
-std::vector<VisibilityGroup*> visibilityGroupsIn(osg::Node& graph)
-{
-    struct Finder : osg::NodeVisitor
-    {
-        Finder() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-        void apply(osg::Group& group) override
-        {
-            if (auto* visibilityGroup = dynamic_cast<VisibilityGroup*>(&group))
-                found.push_back(visibilityGroup);
-            traverse(group);
-        }
-        std::vector<VisibilityGroup*> found;
-    } finder;
-    graph.accept(finder);
-    return finder.found;
-}
-
 // `set` over `size` ids (ids only grow from frame to frame).
 core::VisibleSet grown(const core::VisibleSet& set, std::size_t size)
 {
@@ -104,15 +84,13 @@ PassResult renderDynamicPass(BenchViewer& viewer, osg::Node& graph, DynamicWalk&
                              const std::vector<BenchView>& views, const DynamicReference& reference)
 {
     PassResult pass;
-    const std::vector<VisibilityGroup*> groups = visibilityGroupsIn(graph);
     dynamic.reset();
     viewer.renderFrame(views.front()); // priming frame, as renderModePass
     const std::size_t count = reference.objects.objects.size();
     for (std::size_t v = 0; v < views.size(); ++v)
     {
-        if (dynamic.advanceTo(v))
-            for (VisibilityGroup* group : groups)
-                group->dirtyScene();
+        // note: as an application would, the walk only edits the graph; the kit finds the changes
+        dynamic.advanceTo(v);
         const BenchViewer::FrameTiming timing = viewer.renderFrame(views[v]);
         pass.renderSeconds += timing.seconds;
         pass.cullMs.push_back(timing.cullMs);

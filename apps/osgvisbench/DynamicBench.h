@@ -3,8 +3,8 @@
 // osgvisbench --dynamic: the bench run over a dynamic walk (DynamicWalk). Per frame the scene
 // changes the same way for the oracle and every mode; the oracle renders each frame's scene, whose
 // objects keep their ids across frames (reextractScene), so false-invisible is measured per frame
-// as for a static walk. Module-chain modes get dirtyScene after each change (re-extraction with
-// stable ids and sceneReplaced). osg-oq and exact are not supported here.
+// as for a static walk. Nobody calls dirtyScene(): the VisibilityGroups find each change themselves
+// (docs/changes.md). osg-oq and exact are not supported here.
 #include "BenchMode.h"
 #include "BenchOptions.h"
 #include "BenchReport.h"

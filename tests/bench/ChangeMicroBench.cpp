@@ -4,8 +4,10 @@
 // comparison plus what applying the change costs today (re-extraction with stable ids and the new
 // watch). The graph is what applications build: a group per block of 100 objects, each object a
 // MatrixTransform over a Geode with one 12-triangle box, state sets shared per block.
+// BM_WatchMovingReextracted is the way every change was applied before matrices alone were.
 //
 //   osgvis_change_microbench --benchmark_filter=Watch   (figures in docs/changes.md)
+#include "Extraction.h"
 #include "SceneWatch.h"
 
 #include <osgVis/SceneExtractor>
@@ -79,8 +81,32 @@ void BM_WatchStatic(benchmark::State& state)
 }
 BENCHMARK(BM_WatchStatic)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
 
-// range(0) objects, range(1) of them moved every frame: found, then applied as today (re-extraction
-// keeping ids, reporting the moved ones, and the watch recorded again).
+// range(0) objects, range(1) of them moved every frame: found, then applied as ViewCuller does when
+// only matrices changed (the objects below them placed again in a copy of the extraction).
+void BM_WatchMoving(benchmark::State& state)
+{
+    City city(static_cast<int>(state.range(0)));
+    const int stride = static_cast<int>(state.range(0) / state.range(1));
+    osg::ref_ptr<const osgVis::ExtractedScene> scene = osgVis::extractScene(*city.root);
+    osgVis::SceneWatch watch;
+    watch.record(*city.root);
+    int frame = 0;
+    for (auto _ : state)
+    {
+        state.PauseTiming();
+        city.move(stride, ++frame);
+        state.ResumeTiming();
+        const osgVis::SceneWatch::Difference& difference = watch.compare();
+        if (difference.other || difference.moved.empty())
+            state.SkipWithError("expected moved transforms only");
+        scene = osgVis::moveObjects(*scene, difference.moved, {});
+        watch.acceptMatrices(difference);
+    }
+    state.counters["moved"] = static_cast<double>(state.range(1));
+}
+BENCHMARK(BM_WatchMoving)->Args({10000, 1000})->Args({10000, 10})->Unit(benchmark::kMillisecond);
+
+// The same, applied by a re-extraction keeping ids and a new recording (what any change cost before).
 void BM_WatchMovingReextracted(benchmark::State& state)
 {
     City city(static_cast<int>(state.range(0)));

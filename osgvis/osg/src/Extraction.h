@@ -28,6 +28,25 @@ void assignTileKeys(ExtractedScene& out);
 // ids [from, end) below it (its paths hold the paged node at `depth`) reaches outside its box.
 void checkWithinStatedBound(ExtractedScene& out, core::ObjectId placeholder, std::size_t depth, core::ObjectId from);
 
+// A drawable's bounds in the root frame (`world`: its local → root matrix) and its triangle count;
+// with `triangles`, its triangles there appended (counter-clockwise seen from their drawn front).
+struct DrawablePlacement
+{
+    core::Aabb bounds;
+    bool nonFinite = false;    ///< a vertex is not finite there: the object is always visible
+    std::uint32_t counted = 0; ///< triangles drawn
+    std::uint32_t stored = 0;  ///< triangles appended (those with a non-finite corner are not)
+};
+DrawablePlacement placeDrawable(osg::Drawable& drawable, const osg::Matrixd& world, bool clockwiseFront,
+                                std::vector<core::Triangle>* triangles);
+
+// `previous` with the objects below the `moved` transforms placed again (world matrix, bounds,
+// triangles), reported Moved and replacing it: a frame whose only change is matrices costs what moved,
+// not a re-extraction (docs/changes.md). Null where it cannot: clustered drawables, paged nodes,
+// stand-alone occluders, cells or portals in the scene, or a triangle that turned non-finite.
+osg::ref_ptr<ExtractedScene> moveObjects(const ExtractedScene& previous, const std::vector<const osg::Node*>& moved,
+                                         const ExtractionOptions& options);
+
 // Warns about each of `scene`'s oversized tiles that `previous` (may be null) did not list.
 void warnOversizedTiles(const ExtractedScene& scene, const ExtractedScene* previous);
 } // namespace osgVis

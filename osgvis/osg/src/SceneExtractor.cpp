@@ -18,9 +18,9 @@
 #include <osg/MatrixTransform>
 #include <osg/NodeVisitor>
 #include <osg/Notify>
+#include <osg/PagedLOD>
 #include <osg/PositionAttitudeTransform>
 #include <osg/PrimitiveSet>
-#include <osg/PagedLOD>
 #include <osg/Projection>
 #include <osg/ProxyNode>
 #include <osg/TriangleFunctor>
@@ -348,7 +348,8 @@ void checkWithinStatedBound(ExtractedScene& out, core::ObjectId placeholder, std
     const double slack = 1e-6 * (1.0 + glm::length(stated.bounds.extent()));
     const core::Aabb allowed(stated.bounds.min - core::Vec3(slack), stated.bounds.max + core::Vec3(slack));
     std::vector<bool> oversized(node.getNumChildren(), false);
-    const auto childOf = [&](core::ObjectId id) {
+    const auto childOf = [&](core::ObjectId id)
+    {
         const osg::NodePath& path = out.refs[id].path;
         return path.size() > depth + 1 ? node.getChildIndex(path[depth + 1]) : 0u;
     };
@@ -371,6 +372,47 @@ void checkWithinStatedBound(ExtractedScene& out, core::ObjectId placeholder, std
     for (core::ObjectId id = from; id < out.scene.objects.size(); ++id)
         if (childOf(id) < oversized.size() && oversized[childOf(id)])
             out.scene.objects[id].flags |= core::OBJECT_NO_AUTO_OCCLUDER;
+}
+
+DrawablePlacement placeDrawable(osg::Drawable& drawable, const osg::Matrixd& world, bool clockwiseFront,
+                                std::vector<core::Triangle>* triangles)
+{
+    DrawablePlacement out;
+    BoundsAccumulator bounds(world);
+    const osg::Geometry* geometry = drawable.asGeometry();
+    bool fromVertices = false;
+    if (geometry && geometry->getVertexArray())
+    {
+        ReferencedVertices referenced;
+        geometry->accept(referenced);
+        VertexBoundsVisitor visitor(bounds, referenced.any ? &referenced.used : nullptr);
+        geometry->getVertexArray()->accept(visitor);
+        fromVertices = visitor.handled;
+    }
+    // note: an explicit bound or bound callback may be larger than the vertices (shader
+    // displacement); the union keeps the object conservative.
+    if (!fromVertices || drawable.getInitialBound().valid() || drawable.getComputeBoundingBoxCallback())
+        bounds.addBox(drawable.getBoundingBox());
+    out.bounds = bounds.bounds;
+    out.nonFinite = bounds.nonFinite;
+
+    TriangleCollector collector;
+    collector.world = world;
+    collector.out = triangles;
+    const std::size_t first = triangles ? triangles->size() : 0;
+    osg::TriangleFunctor<TriangleCollector> functor;
+    static_cast<TriangleCollector&>(functor) = collector;
+    drawable.accept(functor);
+    out.counted = static_cast<const TriangleCollector&>(functor).count;
+    if (!triangles)
+        return out;
+    out.stored = static_cast<std::uint32_t>(triangles->size() - first);
+    // note: stored triangles are counter-clockwise seen from their drawn front, whatever
+    // osg::FrontFace says (face culling and one-sided occluders rely on it)
+    if (clockwiseFront)
+        for (std::size_t t = first; t < triangles->size(); ++t)
+            std::swap((*triangles)[t].b, (*triangles)[t].c);
+    return out;
 }
 
 namespace
@@ -563,43 +605,17 @@ private:
             if (addClusters(drawable, ref, flags, *layout, eligibility.clockwiseFront))
                 return;
 
-        BoundsAccumulator bounds(ref.world);
-        const osg::Geometry* geometry = drawable.asGeometry();
-        bool fromVertices = false;
-        if (geometry && geometry->getVertexArray())
-        {
-            ReferencedVertices referenced;
-            geometry->accept(referenced);
-            VertexBoundsVisitor visitor(bounds, referenced.any ? &referenced.used : nullptr);
-            geometry->getVertexArray()->accept(visitor);
-            fromVertices = visitor.handled;
-        }
-        // note: an explicit bound or bound callback may be larger than the vertices (shader
-        // displacement); the union keeps the object conservative.
-        if (!fromVertices || drawable.getInitialBound().valid() || drawable.getComputeBoundingBoxCallback())
-            bounds.addBox(drawable.getBoundingBox());
-        if (bounds.nonFinite)
+        const DrawablePlacement placed = placeDrawable(drawable, ref.world, eligibility.clockwiseFront,
+                                                       _options.keepTriangles ? &_out.scene.triangles : nullptr);
+        if (placed.nonFinite)
             flags |= core::OBJECT_ALWAYS_VISIBLE;
+        const auto firstTriangle = static_cast<std::uint32_t>(_out.scene.triangles.size()) - placed.stored;
 
-        TriangleCollector triangles;
-        triangles.world = ref.world;
-        triangles.out = _options.keepTriangles ? &_out.scene.triangles : nullptr;
-        const auto firstTriangle = static_cast<std::uint32_t>(_out.scene.triangles.size());
-        osg::TriangleFunctor<TriangleCollector> functor;
-        static_cast<TriangleCollector&>(functor) = triangles;
-        drawable.accept(functor);
-        const TriangleCollector& counted = functor;
-        // note: stored triangles are counter-clockwise seen from their drawn front, whatever
-        // osg::FrontFace says (face culling and one-sided occluders rely on it)
-        if (eligibility.clockwiseFront && _options.keepTriangles)
-            for (std::size_t t = firstTriangle; t < _out.scene.triangles.size(); ++t)
-                std::swap(_out.scene.triangles[t].b, _out.scene.triangles[t].c);
-
-        const core::ObjectId id = _out.scene.addObject(bounds.bounds, counted.count, flags, drawable.getName());
+        const core::ObjectId id = _out.scene.addObject(placed.bounds, placed.counted, flags, drawable.getName());
         core::SceneObject& object = _out.scene.objects[id];
         object.firstTriangle = firstTriangle;
         if (_options.keepTriangles)
-            object.triangleCount = static_cast<std::uint32_t>(_out.scene.triangles.size()) - firstTriangle;
+            object.triangleCount = placed.stored;
         _out.refs.push_back(std::move(ref));
         _out.indexObject(id);
     }
@@ -793,8 +809,7 @@ void warnOversizedTiles(const ExtractedScene& scene, const ExtractedScene* previ
         if (!previous || std::find(previous->oversizedTiles.begin(), previous->oversizedTiles.end(), tile) ==
                              previous->oversizedTiles.end())
             OSG_WARN << "osgVis: tile " << tile
-                     << " reaches outside the bound its paged node states; that node is always traversed"
-                     << std::endl;
+                     << " reaches outside the bound its paged node states; that node is always traversed" << std::endl;
 }
 
 osg::ref_ptr<ExtractedScene> extractScene(osg::Node& root, const ExtractionOptions& options)

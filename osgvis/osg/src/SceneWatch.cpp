@@ -298,16 +298,16 @@ void SceneWatch::record(osg::Node& root)
     root.accept(recorder);
 }
 
-// One node's own fields, its children, its matrix and its geometry, read in one visit.
-bool SceneWatch::nodeChanged(const NodeEntry& entry) const
+// One node's own fields, its children, its geometry and its matrix, read in one visit.
+SceneWatch::Reading SceneWatch::read(const NodeEntry& entry) const
 {
     const osg::Node& node = *entry.node;
     if (node.getStateSet() != entry.stateSet || node.getDataVariance() != entry.variance)
-        return true;
+        return Reading::Other;
     if (const osg::Callback* callback = node.getCullCallback(); callback != entry.seenCallback)
     {
         if (applicationCullCallback(node) != entry.cullCallback)
-            return true;
+            return Reading::Other;
         entry.seenCallback = callback;
         _held.emplace_back(callback); // its address is compared from now on
     }
@@ -315,30 +315,48 @@ bool SceneWatch::nodeChanged(const NodeEntry& entry) const
     {
         const osg::Group& group = *node.asGroup();
         if (group.getNumChildren() != entry.childCount)
-            return true;
+            return Reading::Other;
         const ChildEntry* recorded = _children.data() + entry.firstChild;
         for (unsigned i = 0; i < entry.childCount; ++i)
         {
             const osg::Node* child = group.getChild(i);
             if (child != recorded[i].child || child->getNodeMask() != recorded[i].mask)
-                return true;
+                return Reading::Other;
         }
     }
-    if (entry.transform != None && !sameMatrix(localMatrix(*node.asTransform()), _transforms[entry.transform].matrix))
-        return true;
     if (entry.drawable != None)
     {
         const DrawableEntry& recorded = _drawables[entry.drawable];
         const osg::BoundingBox& box = node.asDrawable()->getBoundingBox();
         if (box._min != recorded.box._min || box._max != recorded.box._max ||
             geometryKey(*node.asDrawable(), recorded.geometry, recorded.drawArrays) != recorded.geometryKey)
-            return true;
+            return Reading::Other;
     }
-    return false;
+    if (entry.transform != None && !sameMatrix(localMatrix(*node.asTransform()), _transforms[entry.transform].matrix))
+        return Reading::Moved;
+    return Reading::Same;
 }
 
 bool SceneWatch::changed() const
 {
+    return compare().any();
+}
+
+void SceneWatch::acceptMatrices(const Difference& difference)
+{
+    for (std::uint32_t index : difference.movedEntries)
+    {
+        const NodeEntry& entry = _nodes[index];
+        _transforms[entry.transform].matrix = localMatrix(*entry.node->asTransform());
+    }
+}
+
+const SceneWatch::Difference& SceneWatch::compare() const
+{
+    Difference& out = _difference;
+    out.other = false;
+    out.moved.clear();
+    out.movedEntries.clear();
     // note: the nodes lie scattered in memory; fetching a few entries ahead overlaps the misses
     constexpr std::size_t Ahead = 8;
     for (std::size_t i = 0; i < _nodes.size(); ++i)
@@ -350,15 +368,31 @@ bool SceneWatch::changed() const
             __builtin_prefetch(ahead + 64);
             __builtin_prefetch(ahead + 128);
         }
-        if (nodeChanged(_nodes[i]))
-            return true;
+        switch (read(_nodes[i]))
+        {
+        case Reading::Same:
+            break;
+        case Reading::Moved:
+            out.moved.push_back(_nodes[i].node);
+            out.movedEntries.push_back(static_cast<std::uint32_t>(i));
+            break;
+        case Reading::Other:
+            out.other = true;
+            return out;
+        }
     }
     for (const KeyEntry& entry : _states)
         if (drawnStateKey(*static_cast<const osg::StateSet*>(entry.object)) != entry.key)
-            return true;
+        {
+            out.other = true;
+            return out;
+        }
     for (const KeyEntry& entry : _markers)
         if (markerKey(*static_cast<const osg::Node*>(entry.object)) != entry.key)
-            return true;
+        {
+            out.other = true;
+            return out;
+        }
     thread_local std::vector<const osg::Node*> selected;
     for (const SelectionEntry& entry : _selections)
     {
@@ -366,8 +400,11 @@ bool SceneWatch::changed() const
         probe(*entry.group, selected);
         if (selected.size() != entry.count ||
             !std::equal(selected.begin(), selected.end(), _selected.begin() + entry.first))
-            return true;
+        {
+            out.other = true;
+            return out;
+        }
     }
-    return false;
+    return out;
 }
 } // namespace osgVis

@@ -22,9 +22,22 @@ public:
     /// Records `root`'s subgraph as the extractor traverses it: active children, a paged node's
     /// children as loaded (the count of those is ExtractedScene::pagedNodesChanged's to watch).
     void record(osg::Node& root);
-    /// True when something recorded reads differently now; false when nothing is recorded. Not
-    /// thread-safe: one caller at a time (it notes callbacks osgVis installed since the recording).
+    /// What reads differently now than recorded.
+    struct Difference
+    {
+        bool other = false;                  ///< anything but a transform's matrix
+        std::vector<const osg::Node*> moved; ///< transforms whose matrix changed (all of them when !other)
+        std::vector<std::uint32_t> movedEntries;
+        bool any() const { return other || !moved.empty(); }
+    };
+    /// Compares, stopping at the first difference that is not a matrix; the answer is valid until
+    /// the next call. Not thread-safe: one caller at a time (it also notes callbacks osgVis
+    /// installed since the recording).
+    const Difference& compare() const;
+    /// True when something recorded reads differently now; false when nothing is recorded.
     bool changed() const;
+    /// Takes the moved transforms' matrices as recorded, once the objects below them are placed again.
+    void acceptMatrices(const Difference& difference);
     void clear();
     /// What is watched, for statistics and benchmarks.
     std::size_t nodeCount() const { return _nodes.size(); }
@@ -75,7 +88,13 @@ private:
         std::uint64_t key;
     };
 
-    bool nodeChanged(const NodeEntry& entry) const;
+    enum class Reading
+    {
+        Same,
+        Moved, ///< only the matrix differs
+        Other
+    };
+    Reading read(const NodeEntry& entry) const;
 
     std::vector<NodeEntry> _nodes;
     std::vector<ChildEntry> _children;
@@ -86,5 +105,6 @@ private:
     std::vector<KeyEntry> _states, _markers;
     /// Everything above is held, so that no address compared is ever reused by a new object.
     mutable std::vector<osg::ref_ptr<const osg::Referenced>> _held;
+    mutable Difference _difference; ///< compare's answer, kept so that a warm compare allocates nothing
 };
 } // namespace osgVis

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/ViewCuller>
 
+#include "Extraction.h"
 #include "PagingPolicy.h"
 #include "SceneWatch.h"
 
@@ -32,8 +33,8 @@ struct ViewCuller::PerView
     std::unique_ptr<core::AsyncVisibility> async;
     core::BackOff backOff;
     std::chrono::steady_clock::time_point previousCull{}; // when this view last culled
-    std::vector<unsigned> placeholderLastVisible; // per object id: the frame this view last saw a paged node
-    osg::Vec3d previousEye;                        // in the root's frame, at previousFrame
+    std::vector<unsigned> placeholderLastVisible;         // per object id: the frame this view last saw a paged node
+    osg::Vec3d previousEye;                               // in the root's frame, at previousFrame
     unsigned previousFrame = ~0u;
     core::VisibleSet seenAhead; // the prefetch's region answer (regionSeenAhead)
 
@@ -199,16 +200,27 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         const unsigned frame = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : ~0u;
         // note: the application changes the graph in update, before every view's cull, so one
         // comparison a frame suffices; without frame stamps every cull compares
+        osg::ref_ptr<ExtractedScene> moved; // only matrices changed: the objects below them placed again
         if (!extract && !_dirty && (frame == ~0u || frame != _watchedFrame))
-            _dirty = _watch->changed();
+        {
+            const SceneWatch::Difference& difference = _watch->compare();
+            if (!difference.other && !difference.moved.empty())
+                moved = moveObjects(*_scene, difference.moved, _extractionOptions);
+            if (moved)
+                _watch->acceptMatrices(difference);
+            else
+                _dirty = difference.any();
+        }
         _watchedFrame = frame;
         // note: a paged node whose child count changed was merged into or expired by the pager; only
         // its children are extracted again, unless the whole root is dirty anyway
-        const bool paged = !extract && !_dirty && _scene->pagedNodesChanged();
+        const bool paged = !extract && !_dirty && !moved && _scene->pagedNodesChanged();
         const bool reextract = !extract && (_dirty || paged);
         osg::ref_ptr<ExtractedScene> updated = paged ? updatePagedScene(*_scene, _extractionOptions) : nullptr;
         if (extract)
             _scene = extractScene(root, _extractionOptions);
+        else if (moved)
+            _scene = moved;
         else if (updated)
             _scene = updated;
         else if (reextract)
@@ -281,8 +293,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     // is the previous frame's time, with or without the chain.
     figures.backOff = !view->async && !record && view->backOff.enabled();
     const bool useChain =
-        !figures.backOff ||
-        view->backOff.useChain(std::chrono::duration<double>(start - view->previousCull).count());
+        !figures.backOff || view->backOff.useChain(std::chrono::duration<double>(start - view->previousCull).count());
     view->previousCull = start;
     if (!useChain)
     {
@@ -300,8 +311,8 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         const auto* pager = dynamic_cast<const osgDB::DatabasePager*>(cv.getDatabaseRequestHandler());
         const std::size_t residentBudget =
             pager ? pager->getTargetMaximumNumberOfPageLOD() : std::numeric_limits<std::size_t>::max();
-        const PagingFigures pagingFigures = applyPagingPolicy(paging, *scene, view->visible, modelView, projection, frameStamp,
-                                                              residentBudget, view->placeholderLastVisible);
+        const PagingFigures pagingFigures = applyPagingPolicy(paging, *scene, view->visible, modelView, projection,
+                                                              frameStamp, residentBudget, view->placeholderLastVisible);
         figures.pagedNodesDeferred = pagingFigures.deferred;
         figures.pagedNodesKeptFresh = pagingFigures.keptFresh;
         // The eye's last step, per frame, extrapolated for the prefetch.
