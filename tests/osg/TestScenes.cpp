@@ -15,8 +15,8 @@ osg::ref_ptr<osg::Geometry> makeBox(const osg::Vec3& min, const osg::Vec3& max, 
     osg::ref_ptr<osg::Geometry> box = new osg::Geometry;
     osg::ref_ptr<osg::Vec3Array> vertices = new osg::Vec3Array;
     for (int i = 0; i < 8; ++i) // corner i: bit 0 → x max, bit 1 → y max, bit 2 → z max
-        vertices->push_back(osg::Vec3((i & 1) ? max.x() : min.x(), (i & 2) ? max.y() : min.y(),
-                                      (i & 4) ? max.z() : min.z()));
+        vertices->push_back(
+            osg::Vec3((i & 1) ? max.x() : min.x(), (i & 2) ? max.y() : min.y(), (i & 4) ? max.z() : min.z()));
     box->setVertexArray(vertices);
     osg::ref_ptr<osg::Vec4Array> colours = new osg::Vec4Array;
     colours->push_back(colour);
@@ -39,8 +39,7 @@ void collectDrawn(const osgUtil::StateGraph& graph, std::set<const osg::Drawable
 }
 } // namespace
 
-TestView::TestView(osgUtil::CullVisitor* cv)
-    : _cv(cv ? cv : new osgUtil::CullVisitor), _frameStamp(new osg::FrameStamp)
+TestView::TestView(osgUtil::CullVisitor* cv) : _cv(cv ? cv : new osgUtil::CullVisitor), _frameStamp(new osg::FrameStamp)
 {
     _cv->setIdentifier(new osgUtil::CullVisitor::Identifier);
     _cv->setCullingMode(osg::CullSettings::NO_CULLING);
@@ -115,6 +114,24 @@ osg::ref_ptr<CaptureImage> setUpCapturingCamera(osg::Camera& camera, unsigned wi
     camera.setFinalDrawCallback(capture);
     return capture;
 }
+
+void CaptureImage::operator()(osg::RenderInfo&) const
+{
+    image->readPixels(0, 0, int(width), int(height), GL_RGBA, GL_UNSIGNED_BYTE);
+    std::lock_guard<std::mutex> lock(_mutex);
+    if (keepFrames)
+        _frames.push_back(new osg::Image(*image, osg::CopyOp::DEEP_COPY_ALL));
+    ++_draws;
+    _drawn.notify_all();
+}
+
+std::vector<osg::ref_ptr<osg::Image>> CaptureImage::waitForFrames(unsigned draws, std::chrono::seconds timeout) const
+{
+    std::unique_lock<std::mutex> lock(_mutex);
+    _drawn.wait_for(lock, timeout, [&] { return _draws >= draws; });
+    return _frames;
+}
+
 bool samePixels(const osg::Image& a, const osg::Image& b)
 {
     return a.s() == b.s() && a.t() == b.t() && a.getTotalSizeInBytes() == b.getTotalSizeInBytes() &&

@@ -10,7 +10,11 @@
 #include <osg/Vec4>
 #include <osgUtil/CullVisitor>
 
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <set>
+#include <vector>
 
 namespace osgVis::test
 {
@@ -45,16 +49,27 @@ private:
 // undecorated window where the GLX server has no pbuffers. Null without a display.
 osg::ref_ptr<osg::GraphicsContext> createTestContext(unsigned width, unsigned height);
 
-// A camera's final-draw callback reading its colour buffer (width × height RGBA) into `image`.
+// A camera's final-draw callback reading its colour buffer (width × height RGBA) into `image` and,
+// with `keepFrames` (set before the first draw), a copy of it at every draw. A threaded viewer draws
+// behind its main thread, and its stopThreading() drops the draws still queued: waitForFrames first.
 struct CaptureImage : public osg::Camera::DrawCallback
 {
     CaptureImage(unsigned w, unsigned h) : width(w), height(h) {}
     unsigned width, height;
     osg::ref_ptr<osg::Image> image = new osg::Image;
-    void operator()(osg::RenderInfo&) const override
-    {
-        image->readPixels(0, 0, int(width), int(height), GL_RGBA, GL_UNSIGNED_BYTE);
-    }
+    bool keepFrames = false;
+    void operator()(osg::RenderInfo&) const override;
+
+    // Waits until `draws` draws have been captured (for at most `timeout`) and returns the copies
+    // kept, one per draw in drawing order (none without keepFrames).
+    std::vector<osg::ref_ptr<osg::Image>> waitForFrames(unsigned draws,
+                                                        std::chrono::seconds timeout = std::chrono::seconds(60)) const;
+
+private:
+    mutable std::mutex _mutex;
+    mutable std::condition_variable _drawn;
+    mutable unsigned _draws = 0;
+    mutable std::vector<osg::ref_ptr<osg::Image>> _frames;
 };
 
 // Gives `camera` an offscreen context of width × height (createTestContext), the whole viewport,

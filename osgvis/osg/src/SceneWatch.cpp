@@ -204,9 +204,9 @@ private:
         hold(&node);
         SceneWatch::NodeEntry entry{&node,
                                     node.getStateSet(),
+                                    node.getStateSet() ? drawnStateKey(*node.getStateSet()) : SceneWatch::NoState,
                                     applicationCullCallback(node),
                                     node.getCullCallback(),
-                                    node.getDataVariance(),
                                     false,
                                     static_cast<std::uint32_t>(_watch._children.size()),
                                     0,
@@ -302,8 +302,20 @@ void SceneWatch::record(osg::Node& root)
 SceneWatch::Reading SceneWatch::read(const NodeEntry& entry) const
 {
     const osg::Node& node = *entry.node;
-    if (node.getStateSet() != entry.stateSet || node.getDataVariance() != entry.variance)
-        return Reading::Other;
+    if (const osg::StateSet* stateSet = node.getStateSet(); stateSet != entry.stateSet)
+    {
+        // note: OSG's pager shares equal state sets between tiles (osgDB::SharedStateManager): a state
+        // set that reads the same for the extraction is no change; its values are watched from now on
+        const std::uint64_t key = stateSet ? drawnStateKey(*stateSet) : NoState;
+        if (key != entry.stateKey)
+            return Reading::Other;
+        entry.stateSet = stateSet;
+        if (stateSet)
+        {
+            _held.emplace_back(stateSet);
+            _states.push_back({stateSet, key});
+        }
+    }
     if (const osg::Callback* callback = node.getCullCallback(); callback != entry.seenCallback)
     {
         if (applicationCullCallback(node) != entry.cullCallback)

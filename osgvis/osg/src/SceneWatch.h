@@ -45,16 +45,17 @@ public:
 private:
     friend class SceneWatchRecorder;
     static constexpr std::uint32_t None = ~0u;
+    static constexpr std::uint64_t NoState = 0;
 
     struct NodeEntry
     {
         const osg::Node* node;
-        const osg::StateSet* stateSet;
-        const osg::Callback* cullCallback; ///< the application's, below osgVis's own
+        mutable const osg::StateSet* stateSet; ///< the last one found (an equal one may replace it)
+        std::uint64_t stateKey;                ///< drawnStateKey of the recorded one (NoState: none)
+        const osg::Callback* cullCallback;     ///< the application's, below osgVis's own
         /// The callback last found on the node that leads to cullCallback (osgVis's own installs
         /// after the recording): compared first, as a pointer.
         mutable const osg::Callback* seenCallback;
-        osg::Object::DataVariance variance;
         bool listsChildren;                   ///< a group's children are listed; a paged node's are not (the pager's)
         std::uint32_t firstChild, childCount; ///< in _children
         std::uint32_t transform, drawable;    ///< in _transforms, _drawables, or None
@@ -102,7 +103,8 @@ private:
     std::vector<const osg::Node*> _selected;
     std::vector<TransformEntry> _transforms;
     std::vector<DrawableEntry> _drawables;
-    std::vector<KeyEntry> _states, _markers;
+    mutable std::vector<KeyEntry> _states; ///< each distinct state set's values
+    std::vector<KeyEntry> _markers;
     /// Everything above is held, so that no address compared is ever reused by a new object.
     mutable std::vector<osg::ref_ptr<const osg::Referenced>> _held;
     mutable Difference _difference; ///< compare's answer, kept so that a warm compare allocates nothing
