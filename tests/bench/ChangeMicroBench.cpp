@@ -81,9 +81,9 @@ void BM_WatchStatic(benchmark::State& state)
 }
 BENCHMARK(BM_WatchStatic)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
 
-// range(0) objects, range(1) of them moved every frame: found, then applied as ViewCuller does when
-// only matrices changed (the objects below them placed again in a copy of the extraction).
-void BM_WatchMoving(benchmark::State& state)
+// range(0) objects, range(1) of them moved every frame, found by the watch and applied by `apply`
+// (scene, watch, root), timed together.
+template <class Apply> void runMoving(benchmark::State& state, Apply apply)
 {
     City city(static_cast<int>(state.range(0)));
     const int stride = static_cast<int>(state.range(0) / state.range(1));
@@ -96,37 +96,39 @@ void BM_WatchMoving(benchmark::State& state)
         state.PauseTiming();
         city.move(stride, ++frame);
         state.ResumeTiming();
-        const osgVis::SceneWatch::Difference& difference = watch.compare();
-        if (difference.other || difference.moved.empty())
-            state.SkipWithError("expected moved transforms only");
-        scene = osgVis::moveObjects(*scene, difference.moved, {});
-        watch.acceptMatrices(difference);
+        apply(scene, watch, *city.root);
     }
     state.counters["moved"] = static_cast<double>(state.range(1));
+}
+
+// As ViewCuller applies a frame that only changed matrices: the objects below them placed again in a
+// copy of the extraction.
+void BM_WatchMoving(benchmark::State& state)
+{
+    runMoving(state,
+              [&](osg::ref_ptr<const osgVis::ExtractedScene>& scene, osgVis::SceneWatch& watch, osg::Node&)
+              {
+                  const osgVis::SceneWatch::Difference& difference = watch.compare();
+                  if (difference.other || difference.moved.empty())
+                      state.SkipWithError("expected moved transforms only");
+                  scene = osgVis::moveObjects(*scene, difference.moved, {});
+                  watch.acceptMatrices(difference);
+              });
 }
 BENCHMARK(BM_WatchMoving)->Args({10000, 1000})->Args({10000, 10})->Unit(benchmark::kMillisecond);
 
 // The same, applied by a re-extraction keeping ids and a new recording (what any change cost before).
 void BM_WatchMovingReextracted(benchmark::State& state)
 {
-    City city(static_cast<int>(state.range(0)));
-    const int stride = static_cast<int>(state.range(0) / state.range(1));
-    osg::ref_ptr<const osgVis::ExtractedScene> scene = osgVis::extractScene(*city.root);
-    osgVis::SceneWatch watch;
-    watch.record(*city.root);
-    int frame = 0;
-    for (auto _ : state)
-    {
-        state.PauseTiming();
-        city.move(stride, ++frame);
-        state.ResumeTiming();
-        if (watch.changed())
-        {
-            scene = osgVis::reextractScene(*city.root, *scene);
-            watch.record(*city.root);
-        }
-    }
-    state.counters["moved"] = static_cast<double>(state.range(1));
+    runMoving(state,
+              [](osg::ref_ptr<const osgVis::ExtractedScene>& scene, osgVis::SceneWatch& watch, osg::Node& root)
+              {
+                  if (watch.changed())
+                  {
+                      scene = osgVis::reextractScene(root, *scene);
+                      watch.record(root);
+                  }
+              });
 }
 BENCHMARK(BM_WatchMovingReextracted)->Args({10000, 1000})->Args({10000, 10})->Unit(benchmark::kMillisecond);
 } // namespace

@@ -13,6 +13,10 @@ osg::ref_ptr<ExtractedScene> extractSceneQuietly(osg::Node& root, const Extracti
 // `prefix` (the root .. child's parent).
 void extractBelow(ExtractedScene& out, const osg::NodePath& prefix, osg::Node& child, const ExtractionOptions& options);
 
+// Node types whose cull traversal draws exactly their drawables, nothing else, entering every child
+// whose mask is valid (see ChildRange::closed).
+bool plainNodeType(const osg::Node& node);
+
 // Paged nodes (PagedLOD, ProxyNode): whether the node states its bound (a user centre and radius),
 // whether that bound covers the children still to load, and the file of a child.
 bool boundStated(const osg::Group& node);

@@ -2,6 +2,7 @@
 #include "OccluderEligibility.h"
 
 #include "PagedNodeCulling.h"
+#include "ValueHash.h"
 
 #include "CullingContext.h"
 
@@ -15,16 +16,15 @@
 #include <osg/FrontFace>
 #include <osg/Geode>
 #include <osg/LOD>
-#include <osg/PagedLOD>
-#include <osg/ProxyNode>
 #include <osg/MatrixTransform>
+#include <osg/PagedLOD>
 #include <osg/PolygonMode>
 #include <osg/PositionAttitudeTransform>
 #include <osg/Program>
+#include <osg/ProxyNode>
 
 #include <osgVis/core/scene/Scene.h>
 
-#include <cstring>
 #include <limits>
 #include <typeinfo>
 
@@ -199,27 +199,11 @@ OccluderEligibility occluderEligibility(const osg::NodePath& path)
     return out;
 }
 
-namespace
-{
-struct StateKey
-{
-    std::uint64_t value = 1469598103934665603ull;
-    void mix(std::uint64_t v) { value = (value ^ v) * 1099511628211ull; }
-    void mix(const void* p) { mix(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p))); }
-    void mixDouble(double d)
-    {
-        std::uint64_t bits;
-        std::memcpy(&bits, &d, sizeof bits);
-        mix(bits);
-    }
-};
-} // namespace
-
 // note: reads every value DrawnState, the rules above and the extractor's transparency test read, so
 // that a state set edited in place changes the key (docs/changes.md).
 std::uint64_t drawnStateKey(const osg::StateSet& ss)
 {
-    StateKey key;
+    ValueHash key;
     for (GLenum mode : {GLenum(GL_CULL_FACE), GLenum(GL_ALPHA_TEST), GLenum(GL_DEPTH_TEST), GLenum(GL_STENCIL_TEST),
                         GLenum(GL_BLEND)})
         key.mix(ss.getMode(mode));

@@ -74,6 +74,15 @@ bool ExtractedScene::pagedNodesChanged() const
     return false;
 }
 
+// Node types whose cull traversal draws exactly their drawables, nothing else (see ChildRange::closed).
+bool plainNodeType(const osg::Node& node)
+{
+    const std::type_info& t = typeid(node);
+    return t == typeid(osg::Group) || t == typeid(osg::Geode) || t == typeid(osg::MatrixTransform) ||
+           t == typeid(osg::PositionAttitudeTransform) || t == typeid(Occluder) || t == typeid(Cell) ||
+           t == typeid(Portal);
+}
+
 namespace
 {
 bool finite(const osg::Vec3d& v)
@@ -265,15 +274,6 @@ bool transparentState(const osg::StateSet* ss)
 bool isOsgVisGroup(const osg::Node& node)
 {
     return dynamic_cast<const VisibilityGroup*>(&node) != nullptr;
-}
-
-// Node types whose cull traversal draws exactly their drawables, nothing else (see ChildRange::closed).
-bool plainNodeType(const osg::Node& node)
-{
-    const std::type_info& t = typeid(node);
-    return t == typeid(osg::Group) || t == typeid(osg::Geode) || t == typeid(osg::MatrixTransform) ||
-           t == typeid(osg::PositionAttitudeTransform) || t == typeid(Occluder) || t == typeid(Cell) ||
-           t == typeid(Portal);
 }
 
 bool plainCullCallback(const osg::Drawable& drawable)

@@ -2,8 +2,10 @@
 #include "SceneWatch.h"
 
 #include "CullingContext.h"
+#include "Extraction.h"
 #include "OccluderEligibility.h"
 #include "PagedNodeCulling.h"
+#include "ValueHash.h"
 
 #include <osgVis/Cell>
 #include <osgVis/Occluder>
@@ -27,32 +29,6 @@ namespace osgVis
 {
 namespace
 {
-struct Hash
-{
-    std::uint64_t value = 1469598103934665603ull;
-    void mix(std::uint64_t v) { value = (value ^ v) * 1099511628211ull; }
-    void mix(const void* p) { mix(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p))); }
-    void mix(double d)
-    {
-        std::uint64_t bits;
-        std::memcpy(&bits, &d, sizeof bits);
-        mix(bits);
-    }
-    void mix(const std::string& s)
-    {
-        for (char c : s)
-            mix(static_cast<std::uint64_t>(static_cast<unsigned char>(c)));
-        mix(std::uint64_t(s.size()));
-    }
-    void mix(const std::vector<osg::Vec3d>& polygon)
-    {
-        for (const osg::Vec3d& v : polygon)
-            for (int i = 0; i < 3; ++i)
-                mix(v[i]);
-        mix(std::uint64_t(polygon.size()));
-    }
-};
-
 // The cull callback the application set: osgVis's own callbacks wrap it.
 const osg::Callback* applicationCullCallback(const osg::Node& node)
 {
@@ -72,10 +48,7 @@ bool pagedNode(const osg::Node& node)
 // Types whose traversal enters every child whose mask is valid: their children list says it all.
 bool entersEveryChild(const osg::Node& node)
 {
-    const std::type_info& t = typeid(node);
-    return t == typeid(osg::Group) || t == typeid(osg::Geode) || t == typeid(osg::MatrixTransform) ||
-           t == typeid(osg::PositionAttitudeTransform) || t == typeid(VisibilityGroup) || t == typeid(Occluder) ||
-           t == typeid(Cell) || t == typeid(Portal);
+    return plainNodeType(node) || typeid(node) == typeid(VisibilityGroup);
 }
 
 // Placed at cull time (absolute frame, screen-aligned): the extraction keeps their objects visible
@@ -119,7 +92,7 @@ bool anyDrawArrays(const osg::Geometry* geometry)
 // first and count are read at each draw, so they are compared themselves.
 std::uint64_t geometryKey(const osg::Drawable& drawable, const osg::Geometry* geometry, bool drawArrays)
 {
-    Hash hash;
+    ValueHash hash;
     hash.mix(drawable.getDrawCallback());
     hash.mix(drawable.getComputeBoundingBoxCallback());
     if (!geometry)
@@ -144,7 +117,7 @@ std::uint64_t geometryKey(const osg::Drawable& drawable, const osg::Geometry* ge
 
 std::uint64_t markerKey(const osg::Node& node)
 {
-    Hash hash;
+    ValueHash hash;
     if (const auto* occluder = dynamic_cast<const Occluder*>(&node))
         for (const Occluder::Polygon& polygon : occluder->getPolygons())
             hash.mix(polygon);
@@ -153,7 +126,7 @@ std::uint64_t markerKey(const osg::Node& node)
         hash.mix(cell->getName());
         for (int corner = 0; corner < 8; ++corner)
             for (int i = 0; i < 3; ++i)
-                hash.mix(cell->getBounds().corner(corner)[i]);
+                hash.mixDouble(cell->getBounds().corner(corner)[i]);
     }
     else if (const auto* portal = dynamic_cast<const Portal*>(&node))
     {
