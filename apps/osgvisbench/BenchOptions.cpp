@@ -115,6 +115,7 @@ std::string benchUsage()
            "                    [--volume-face N] [--volume-eyes N] [--volume-repeat N]]\n"
            "                   [--volume-cells N]\n"
            "                   [--json OUT.json] [--report DIR [--pictures N]] [--explain] [--backoff on|off]\n"
+           "                   [--oracle-cache DIR]\n"
            "                   [--dump-visible DIR] [--clusters on|off|N]\n"
            "                   [--help]\n"
            "\n"
@@ -207,6 +208,9 @@ std::string benchUsage()
            "  walk: osg's frame | the best mode's frame | a top-down map of what the best mode drew\n"
            "  (green), culled in the frustum (red), left outside it (grey), and the frustum (yellow).\n"
            "  The best mode is the conservative module chain with the highest fps.\n"
+           "--oracle-cache DIR: keep the oracle's exact sets of the rendered walk in DIR, one file per\n"
+           "  model geometry, views, size and --supersample, and take them from there when a later run\n"
+           "  has the same (then the oracle renders nothing). Not for --dynamic or --paged runs.\n"
            "--explain: also say why culling does or does not work on the model: the objects that\n"
            "  are no occluder, by reason (transparent, alpha test, polygon mode, no depth write, under\n"
            "  LOD/Switch, dynamic, degenerate, too small, ...), the occluder polygons the object-space\n"
@@ -301,6 +305,8 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             options.explain = true;
         else if (flag == "--json")
             options.jsonFile = value();
+        else if (flag == "--oracle-cache")
+            options.oracleCacheDir = value();
         else if (flag == "--supersample")
             options.supersample = unsigned(parseUnsigned(flag, value()));
         else if (flag == "--cube")
@@ -431,6 +437,11 @@ BenchOptions parseBenchOptions(int argc, char** argv)
         throw UsageError("--pictures go into the report: give --report DIR too");
     if (!options.reportDir.empty() && (options.cullOnly || options.dynamic))
         throw UsageError("--report draws the rendered walk's plots: not with --cull-only or --dynamic");
+    if (!options.oracleCacheDir.empty() &&
+        (options.cullOnly || options.dynamic || options.paged || !options.volume.empty() || options.volumeCells > 0 ||
+         !options.dumpVisibleDir.empty()))
+        throw UsageError("--oracle-cache keeps the oracle of a rendered static walk: not with --cull-only, --dynamic, "
+                         "--paged, --volume, --volume-cells or --dump-visible");
     if (options.explain && (options.cullOnly || options.dynamic))
         throw UsageError("--explain reads the rendered walk: not with --cull-only or --dynamic");
     if (options.cullOnly && !options.sweeps() && !options.maskSweep())

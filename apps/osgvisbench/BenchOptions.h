@@ -37,6 +37,7 @@ struct BenchOptions
     unsigned views = 0;               // --views N: subsample the walk evenly; 0 keeps every key
     unsigned width = 0, height = 0;   // --size WxH; 0: the walk's size
     std::string jsonFile;             // --json OUT.json
+    std::string oracleCacheDir;       // --oracle-cache DIR: the oracle's exact sets kept between runs (OracleCache)
     std::string reportDir;            // --report DIR: DIR/index.html (and pictures) for people
     int pictures = -1;                // --pictures N: side-by-side pictures in the report; -1: 6
     bool explain = false;             // --explain: why culling does or does not work on the model

@@ -40,6 +40,8 @@ struct ModeMetrics
     std::optional<double> drawnFraction;     // Σ tri(S) / (views × tri(scene))
     std::optional<double> cullMsMedian;
     std::optional<double> cullMsP99;
+    std::optional<double> chainMsMedian; // osgVis's visibility query alone (extraction and OSG's traversal excluded)
+    std::optional<double> chainMsP99;
     std::optional<double> fps;
     std::optional<double> speedupVsOsg;     // fps / fps(osg)
     std::optional<double> fpsVsExact;       // fps / fps(exact)

@@ -10,6 +10,7 @@
 #include "Metrics.h"
 #include "ModeGraph.h"
 #include "ModePass.h"
+#include "OracleCache.h"
 #include "OracleReference.h"
 #include "ProgressiveTable.h"
 #include "ThreadingTable.h"
@@ -55,7 +56,10 @@ void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core
     const unsigned supersample = options.supersample;
     const core::Scene& model = scene.objects->scene;
     const OracleReference reference =
-        computeOracleReference(*scene.model, *scene.objects, views, walk.width, walk.height, supersample);
+        options.oracleCacheDir.empty()
+            ? computeOracleReference(*scene.model, *scene.objects, views, walk.width, walk.height, supersample)
+            : cachedOracleReference(options.oracleCacheDir, *scene.model, *scene.objects, views, walk.width,
+                                    walk.height, supersample);
     report.supersample = reference.supersample;
     report.viewsWithSupersampleExtras = reference.viewsWithSupersampleExtras;
     report.supersampleExtras = reference.supersampleExtras;

@@ -3,6 +3,7 @@
 
 #include <CameraSetup.h>
 
+#include <osgVis/Statistics>
 #include <osgVis/oracle/OffscreenContext.h>
 
 #include <osg/GL>
@@ -92,6 +93,10 @@ BenchViewer::FrameTiming BenchViewer::renderFrame(const BenchView& view)
     timing.cullMs = camera->getStats()->getAttribute(frameNumber, "Cull traversal time taken", cullSeconds)
                         ? cullSeconds * 1000.0
                         : std::numeric_limits<double>::quiet_NaN();
+    double chainMs = 0.0;
+    timing.chainMs = camera->getStats()->getAttribute(frameNumber, STATS_CULL_MS, chainMs)
+                         ? chainMs
+                         : std::numeric_limits<double>::quiet_NaN();
     return timing;
 }
 

@@ -40,6 +40,7 @@ public:
     {
         double seconds = 0.0; // wall time of the whole frame, glFinish included
         double cullMs = 0.0;  // OSG's "Cull traversal time taken" of this frame; NaN if OSG gave none
+        double chainMs = 0.0; // osgVis's own visibility query in that cull (STATS_CULL_MS); NaN if none ran
     };
     FrameTiming renderFrame(const BenchView& view);
     // Renders the view once and returns its pixels (RGB, bottom row first), for pictures: not timed.

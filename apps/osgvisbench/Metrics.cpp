@@ -115,6 +115,9 @@ ModeResult measureMode(const BenchMode& mode, const core::Scene& scene, const Or
     const std::vector<double> cullMs = sortedFinite(pass.cullMs);
     m.cullMsMedian = median(cullMs);
     m.cullMsP99 = percentile(cullMs, 0.99);
+    const std::vector<double> chainMs = sortedFinite(pass.chainMs);
+    m.chainMsMedian = median(chainMs);
+    m.chainMsP99 = percentile(chainMs, 0.99);
     m.fps = ratio(double(pass.emitted.size()), pass.renderSeconds);
     if (reference.pixelCounts)
         m.misdrawn = misdrawn.summary();

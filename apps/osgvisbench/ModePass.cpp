@@ -24,6 +24,7 @@ PassResult renderModePass(const std::string& label, BenchViewer& viewer, const s
         const BenchViewer::FrameTiming timing = viewer.renderFrame(views[v]);
         pass.renderSeconds += timing.seconds;
         pass.cullMs.push_back(timing.cullMs);
+        pass.chainMs.push_back(timing.chainMs);
         if (afterView)
             afterView(v);
 

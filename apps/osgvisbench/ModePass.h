@@ -17,6 +17,7 @@ struct PassResult
 {
     std::vector<core::VisibleSet> emitted; // S(v) per view
     std::vector<double> cullMs;            // per view
+    std::vector<double> chainMs;           // per view: osgVis's visibility query (NaN: none ran)
     double renderSeconds = 0.0;            // sum of the frames' wall times
     std::size_t unmatchedLeaves = 0;       // see EmittedObjects::unmatchedLeaves
 };

@@ -150,7 +150,6 @@ OracleReference computeOracleReference(osg::Node& root, const ExtractedScene& sc
         if (clusters)
             clusters->narrow(views[v], result.visible, viewReference.exact);
         addPixelCounts(result, sceneIdOf, scene, viewReference);
-        viewReference.inFrustum = objectsInFrustum(scene.scene, views[v].frustum);
         if (result.onlyInSupersampled != 0)
         {
             reference.viewsWithSupersampleExtras.push_back(std::uint32_t(v));
@@ -159,6 +158,13 @@ OracleReference computeOracleReference(osg::Node& root, const ExtractedScene& sc
         reference.views.push_back(std::move(viewReference));
         progress.advance(v + 1);
     }
+    addFrustumSets(reference, scene.scene, views);
     return reference;
+}
+
+void addFrustumSets(OracleReference& reference, const core::Scene& scene, const std::vector<BenchView>& views)
+{
+    for (std::size_t v = 0; v < reference.views.size() && v < views.size(); ++v)
+        reference.views[v].inFrustum = objectsInFrustum(scene, views[v].frustum);
 }
 } // namespace osgVis::bench

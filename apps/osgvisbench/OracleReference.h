@@ -48,4 +48,7 @@ struct OracleReference
 OracleReference computeOracleReference(osg::Node& root, const ExtractedScene& scene,
                                        const std::vector<BenchView>& views, unsigned width, unsigned height,
                                        unsigned supersample);
+
+// Sets every view's inFrustum (objects whose world bounds are not entirely outside its frustum).
+void addFrustumSets(OracleReference& reference, const core::Scene& scene, const std::vector<BenchView>& views);
 } // namespace osgVis::bench

@@ -81,6 +81,8 @@ void writeMode(std::ostream& out, const ModeResult& result, std::size_t views)
         << "      \"drawn_fraction\": " << jsonNumber(m.drawnFraction) << ",\n"
         << "      \"cull_ms_median\": " << jsonNumber(m.cullMsMedian) << ",\n"
         << "      \"cull_ms_p99\": " << jsonNumber(m.cullMsP99) << ",\n"
+        << "      \"chain_ms_median\": " << jsonNumber(m.chainMsMedian) << ",\n"
+        << "      \"chain_ms_p99\": " << jsonNumber(m.chainMsP99) << ",\n"
         << "      \"fps\": " << jsonNumber(m.fps) << ",\n";
     writeMisdrawn(out, m.misdrawn, views);
     out << "      \"speedup_vs_osg\": " << jsonNumber(m.speedupVsOsg) << ",\n"

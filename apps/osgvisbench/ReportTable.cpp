@@ -46,7 +46,8 @@ void writeModeTable(std::ostream& out, const BenchReport& report)
     const std::size_t nameWidth =
         nameColumnWidth(report.modes, [](const ModeResult& result) { return result.mode.name; });
     out << leftCell("mode", nameWidth) << cell("false-invis", 12) << cell("efficacy", 10) << cell("occl.eff", 10)
-        << cell("overest", 9) << cell("drawn%", 8) << cell("cull ms med/p99", 17) << cell("fps", 9)
+        << cell("overest", 9) << cell("drawn%", 8) << cell("cull ms med/p99", 17) << cell("chain ms", 13)
+        << cell("fps", 9)
         << cell("speedup", 9) << "\n";
     for (const ModeResult& result : report.modes)
     {
@@ -55,6 +56,7 @@ void writeModeTable(std::ostream& out, const BenchReport& report)
             << cell(formatted(m.efficacy, "%.3f"), 10) << cell(formatted(m.occlusionEfficacy, "%.3f"), 10)
             << cell(formatted(m.overestimation, "%.2f"), 9) << cell(formatted(m.drawnFraction, "%.1f", 100.0), 8)
             << cell(formatted(m.cullMsMedian, "%.2f") + "/" + formatted(m.cullMsP99, "%.2f"), 17)
+            << cell(formatted(m.chainMsMedian, "%.2f") + "/" + formatted(m.chainMsP99, "%.2f"), 13)
             << cell(formatted(m.fps, "%.1f"), 9) << cell(formatted(m.speedupVsOsg, "%.2fx"), 9) << "\n";
     }
 }

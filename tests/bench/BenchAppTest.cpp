@@ -143,6 +143,61 @@ TEST(BenchApp, OfficeMeetsTheContractAndRunsOcclusionQueries)
     expectBenchInvariants("office", ",osg-oq");
 }
 
+// The JSON's mode rows with every timing field dropped: what must agree between two runs.
+std::string timelessModes(const std::string& json)
+{
+    std::string kept;
+    std::size_t begin = json.find("\"modes\"");
+    const std::size_t end = json.find("\"per_view\"");
+    for (std::size_t at = begin; at < end;)
+    {
+        const std::size_t line = json.find('\n', at);
+        const std::string text = json.substr(at, line - at);
+        if (text.find("_ms_") == std::string::npos && text.find("fps") == std::string::npos &&
+            text.find("speedup") == std::string::npos)
+            kept += text + "\n";
+        at = line + 1;
+    }
+    return kept;
+}
+
+TEST(BenchApp, OracleCacheGivesTheSameSetsAndIgnoresDamagedFiles)
+{
+    const std::filesystem::path cache = scratchFile("oracle-cache");
+    std::filesystem::remove_all(cache);
+    const std::string command = "--generate office --triangles 5000 --views 6 --size 160x128 --modes osg,frustum,"
+                                "mask,exact --oracle-cache '" + cache.string() + "' --json ";
+    const AppRun first = runBench(command + "'" + scratchFile("first.json").string() + "'");
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    EXPECT_EQ(first.output.find("from the cache"), std::string::npos) << first.output;
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(cache))
+        files.push_back(entry.path());
+    ASSERT_EQ(files.size(), 1u) << "one file per scene, walk and size";
+
+    const AppRun second = runBench(command + "'" + scratchFile("second.json").string() + "'");
+    ASSERT_EQ(second.exitCode, 0) << second.output;
+    EXPECT_NE(second.output.find("6 views from the cache"), std::string::npos) << second.output;
+    const std::string rows = timelessModes(readText(scratchFile("first.json")));
+    ASSERT_NE(rows.find("false_invisible"), std::string::npos) << rows;
+    EXPECT_EQ(timelessModes(readText(scratchFile("second.json"))), rows);
+
+    // Another size is another key; a truncated file is rendered again, said, and replaced.
+    const AppRun resized = runBench("--generate office --triangles 5000 --views 6 --size 128x128 --modes osg "
+                                    "--oracle-cache '" + cache.string() + "'");
+    ASSERT_EQ(resized.exitCode, 0) << resized.output;
+    EXPECT_EQ(resized.output.find("from the cache"), std::string::npos) << resized.output;
+    std::filesystem::resize_file(files.front(), std::filesystem::file_size(files.front()) / 2);
+    const AppRun damaged = runBench(command + "'" + scratchFile("third.json").string() + "'");
+    ASSERT_EQ(damaged.exitCode, 0) << damaged.output;
+    EXPECT_NE(damaged.output.find("ignoring the cached oracle"), std::string::npos) << damaged.output;
+    EXPECT_EQ(timelessModes(readText(scratchFile("third.json"))), rows);
+    const AppRun repaired = runBench(command + "'" + scratchFile("fourth.json").string() + "'");
+    EXPECT_NE(repaired.output.find("from the cache"), std::string::npos) << repaired.output;
+
+    EXPECT_EQ(runBench("--generate office --dynamic --oracle-cache '" + cache.string() + "'").exitCode, 2);
+}
+
 TEST(BenchApp, UnknownModeExitsTwoBeforeAnyWork)
 {
     const AppRun run = runBench("--generate city --triangles 5000 --modes osg,no-such-mode");
