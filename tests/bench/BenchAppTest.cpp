@@ -163,11 +163,11 @@ std::string timelessModes(const std::string& json)
 
 TEST(BenchApp, OracleCacheGivesTheSameSetsAndIgnoresDamagedFiles)
 {
-    const std::filesystem::path cache = scratchFile("oracle-cache");
-    std::filesystem::remove_all(cache);
+    const std::filesystem::path dir = scratchFile("").parent_path(); // made afresh once: each call wipes it
+    const std::filesystem::path cache = dir / "oracle-cache";
     const std::string command = "--generate office --triangles 5000 --views 6 --size 160x128 --modes osg,frustum,"
                                 "mask,exact --oracle-cache '" + cache.string() + "' --json ";
-    const AppRun first = runBench(command + "'" + scratchFile("first.json").string() + "'");
+    const AppRun first = runBench(command + "'" + (dir / "first.json").string() + "'");
     ASSERT_EQ(first.exitCode, 0) << first.output;
     EXPECT_EQ(first.output.find("from the cache"), std::string::npos) << first.output;
     std::vector<std::filesystem::path> files;
@@ -175,12 +175,12 @@ TEST(BenchApp, OracleCacheGivesTheSameSetsAndIgnoresDamagedFiles)
         files.push_back(entry.path());
     ASSERT_EQ(files.size(), 1u) << "one file per scene, walk and size";
 
-    const AppRun second = runBench(command + "'" + scratchFile("second.json").string() + "'");
+    const AppRun second = runBench(command + "'" + (dir / "second.json").string() + "'");
     ASSERT_EQ(second.exitCode, 0) << second.output;
     EXPECT_NE(second.output.find("6 views from the cache"), std::string::npos) << second.output;
-    const std::string rows = timelessModes(readText(scratchFile("first.json")));
+    const std::string rows = timelessModes(readText((dir / "first.json")));
     ASSERT_NE(rows.find("false_invisible"), std::string::npos) << rows;
-    EXPECT_EQ(timelessModes(readText(scratchFile("second.json"))), rows);
+    EXPECT_EQ(timelessModes(readText((dir / "second.json"))), rows);
 
     // Another size is another key; a truncated file is rendered again, said, and replaced.
     const AppRun resized = runBench("--generate office --triangles 5000 --views 6 --size 128x128 --modes osg "
@@ -188,11 +188,11 @@ TEST(BenchApp, OracleCacheGivesTheSameSetsAndIgnoresDamagedFiles)
     ASSERT_EQ(resized.exitCode, 0) << resized.output;
     EXPECT_EQ(resized.output.find("from the cache"), std::string::npos) << resized.output;
     std::filesystem::resize_file(files.front(), std::filesystem::file_size(files.front()) / 2);
-    const AppRun damaged = runBench(command + "'" + scratchFile("third.json").string() + "'");
+    const AppRun damaged = runBench(command + "'" + (dir / "third.json").string() + "'");
     ASSERT_EQ(damaged.exitCode, 0) << damaged.output;
     EXPECT_NE(damaged.output.find("ignoring the cached oracle"), std::string::npos) << damaged.output;
-    EXPECT_EQ(timelessModes(readText(scratchFile("third.json"))), rows);
-    const AppRun repaired = runBench(command + "'" + scratchFile("fourth.json").string() + "'");
+    EXPECT_EQ(timelessModes(readText((dir / "third.json"))), rows);
+    const AppRun repaired = runBench(command + "'" + (dir / "fourth.json").string() + "'");
     EXPECT_NE(repaired.output.find("from the cache"), std::string::npos) << repaired.output;
 
     EXPECT_EQ(runBench("--generate office --dynamic --oracle-cache '" + cache.string() + "'").exitCode, 2);

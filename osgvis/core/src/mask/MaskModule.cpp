@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <unordered_set>
 
 namespace osgVis::core
@@ -65,12 +64,11 @@ Vec3 viewDirection(const View& view)
 // The polygon budget: the `budget` largest of `selected` by area-angle from `eye` (ties by index),
 // in ascending index order so the groups come out the same every run.
 void keepLargestPolygons(const std::vector<OccluderPolygon>& polygons, const Vec3& eye, std::uint32_t budget,
-                         std::vector<std::uint32_t>& selected)
+                         std::vector<std::uint32_t>& selected, std::vector<std::pair<double, std::uint32_t>>& ranked)
 {
     if (budget == 0 || selected.size() <= budget)
         return;
-    std::vector<std::pair<double, std::uint32_t>> ranked;
-    ranked.reserve(selected.size());
+    ranked.clear();
     for (std::uint32_t p : selected)
         ranked.push_back({-areaAngle(polygons[p], eye), p});
     std::nth_element(ranked.begin(), ranked.begin() + budget, ranked.end());
@@ -160,15 +158,47 @@ struct MaskModule::Impl
     MaskGroups groups;
     MaskProjection projection; // of the latest critical frame
 
-    // Critical frames whose stamps may still be alive, oldest first.
     struct CriticalFrame
     {
-        Vec3 eye;
-        double time;
-        double deltaMin, deltaMax; // over the marks it wrote
+        Vec3 eye{0.0};
+        double time = 0.0;
+        double deltaMin = 0.0, deltaMax = 0.0; // over the marks it wrote
         std::vector<ObjectId> occluders;
     };
-    std::deque<CriticalFrame> alive;
+    // Critical frames whose stamps may still be alive, oldest first. Slots of expired frames are
+    // reused, so their occluder lists keep their buffers (a warm critical frame allocates nothing).
+    class CriticalFrames
+    {
+    public:
+        bool empty() const { return _count == 0; }
+        const CriticalFrame& front() const { return _slots[_first]; }
+        void popFront() { ++_first, --_count; }
+        void clear() { _first = _count = 0; }
+        const CriticalFrame* begin() const { return _slots.data() + _first; }
+        const CriticalFrame* end() const { return begin() + _count; }
+        CriticalFrame& pushBack()
+        {
+            if (_first + _count == _slots.size())
+            {
+                if (_first == 0)
+                    _slots.emplace_back();
+                else // swaps move whole buffers: nothing is allocated or freed
+                    std::rotate(_slots.begin(), _slots.begin() + _first, _slots.end()), _first = 0;
+            }
+            return _slots[_first + _count++];
+        }
+
+    private:
+        std::vector<CriticalFrame> _slots;
+        std::size_t _first = 0, _count = 0;
+    };
+    CriticalFrames alive;
+    // Buffers of the critical frame, kept between frames.
+    MaskSelectionScratch selection;
+    std::vector<ObjectId> occluders, restingOn;
+    std::vector<std::uint32_t> selected, nodeStack;
+    std::vector<std::pair<double, std::uint32_t>> rankedPolygons;
+    std::unique_ptr<HierarchyIndex::Walk> walk; // over `index`, which stays in place
     bool haveMask = false;
     View criticalView;
     Vec3 criticalDirection{0.0};
@@ -411,7 +441,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
     // backwards) must not trust them.
     const double speed = _options.maxEyeSpeed;
     while (!m.alive.empty() && t >= m.alive.front().time + m.alive.front().deltaMax / speed)
-        m.alive.pop_front();
+        m.alive.popFront();
     CriticalReason reason = CriticalReason::None;
     bool trusted = true;
     for (const Impl::CriticalFrame& frame : m.alive)
@@ -486,11 +516,14 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
         input.sampleRadius = m.delta;
         input.count = _options.occluders;
         input.measure = _options.measure;
-        const std::vector<ObjectId> occluders = selectMaskOccluders(input);
-        std::vector<std::uint32_t> selected = m.statedPolygons;
+        std::vector<ObjectId>& occluders = m.occluders;
+        selectMaskOccluders(input, m.selection, occluders);
+        std::vector<std::uint32_t>& selected = m.selected;
+        selected.assign(m.statedPolygons.begin(), m.statedPolygons.end());
         // A union of several objects' faces serves while every one of them stands still, and the
         // marks rest on all of them (removing or moving any forgets the marks).
-        std::vector<ObjectId> restingOn = occluders;
+        std::vector<ObjectId>& restingOn = m.restingOn;
+        restingOn.assign(occluders.begin(), occluders.end());
         ++m.criticalCount;
         for (ObjectId id : occluders)
             for (std::uint32_t p : m.polygonsOf[id])
@@ -507,7 +540,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
             }
         std::sort(restingOn.begin(), restingOn.end());
         restingOn.erase(std::unique(restingOn.begin(), restingOn.end()), restingOn.end());
-        keepLargestPolygons(m.polygons, eye, _options.maxOccluderPolygons, selected);
+        keepLargestPolygons(m.polygons, eye, _options.maxOccluderPolygons, selected, m.rankedPolygons);
         stats.selectMs = millisecondsSince(start);
 
         start = Clock::now();
@@ -561,9 +594,14 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
             deltaMin = 0.0;
         m.delta = deltaMin;
         m.validUntil = t + deltaMin / speed;
-        m.alive.push_back({eye, t, deltaMin, deltaMax, restingOn});
+        Impl::CriticalFrame& frame = m.alive.pushBack();
+        frame.eye = eye;
+        frame.time = t;
+        frame.deltaMin = deltaMin;
+        frame.deltaMax = deltaMax;
+        frame.occluders.assign(restingOn.begin(), restingOn.end());
         stats.occluderObjects = static_cast<std::uint32_t>(occluders.size());
-        stats.occluderPolygons = static_cast<std::uint32_t>(m.groups.polygons.size());
+        stats.occluderPolygons = static_cast<std::uint32_t>(m.groups.polygonCount());
         stats.groups = static_cast<std::uint32_t>(m.groups.groupCount());
         stats.coveredPixels = m.mask.coveredPixels();
         if (m.debug)
@@ -733,7 +771,10 @@ void MaskModule::markHidden(Statistics& stats)
     if (m.sceneHierarchy)
     {
         // The renderer's traversal; its order does not matter (each box is judged on its own).
-        HierarchyIndex::Walk walk(m.index, view.eye, false);
+        if (!m.walk)
+            m.walk = std::make_unique<HierarchyIndex::Walk>(m.index, view.eye, false);
+        m.walk->restart(view.eye);
+        HierarchyIndex::Walk& walk = *m.walk;
         const std::vector<ObjectId>& objects = m.index.objects();
         auto enter = [&](const HierarchyNode& node) -> bool
         {
@@ -768,7 +809,8 @@ void MaskModule::markHidden(Statistics& stats)
         return;
     }
 
-    std::vector<std::uint32_t> stack{m.tree.root()};
+    std::vector<std::uint32_t>& stack = m.nodeStack;
+    stack.assign(1, m.tree.root());
     while (!stack.empty())
     {
         const std::uint32_t index = stack.back();
@@ -793,7 +835,8 @@ std::uint32_t MaskModule::applyTreeMarks(double t, VisibleSet& visible)
 {
     Impl& m = *_impl;
     std::uint32_t culled = 0;
-    std::vector<std::uint32_t> stack{m.tree.root()};
+    std::vector<std::uint32_t>& stack = m.nodeStack;
+    stack.assign(1, m.tree.root());
     while (!stack.empty())
     {
         const std::uint32_t index = stack.back();

@@ -4,22 +4,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
-#include <unordered_set>
 
 namespace osgVis::core
 {
 namespace
 {
-struct FlaggedPolygon
-{
-    std::vector<Vec3> vertices;          // eye space
-    std::vector<std::uint32_t> neighbour; // per edge: polygon of the same group across it, or NoNeighbour
-};
+using ClippedPolygon = MaskGroups::ClippedPolygon;
 
 // Sutherland–Hodgman that carries each edge's neighbour: a kept piece of an edge keeps it, the
 // new edge along the clip plane is an outline edge.
-void clip(FlaggedPolygon& polygon, const Plane& plane, FlaggedPolygon& scratch)
+void clip(ClippedPolygon& polygon, const Plane& plane, ClippedPolygon& scratch)
 {
     scratch.vertices.clear();
     scratch.neighbour.clear();
@@ -42,22 +36,14 @@ void clip(FlaggedPolygon& polygon, const Plane& plane, FlaggedPolygon& scratch)
             scratch.neighbour.push_back(aIn ? NoNeighbour : polygon.neighbour[i]);
         }
     }
-    std::swap(polygon, scratch);
+    std::swap(polygon.vertices, scratch.vertices);
+    std::swap(polygon.neighbour, scratch.neighbour);
 }
-} // namespace
 
-void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::vector<std::uint32_t>& selected,
-                     const MaskProjection& projection, double nearDepth, double shift, MaskGroups& out)
+// Each selected polygon's δ (from its nearest point) and its facing from every eye of that ball.
+void classifyFacing(const std::vector<OccluderPolygon>& polygons, const std::vector<std::uint32_t>& selected,
+                    const MaskProjection& projection, double nearDepth, double shift, MaskGroups& out)
 {
-    out.polygons.clear();
-    out.groupStart.clear();
-    out.groupDelta.clear();
-    out.groupRect.clear();
-    std::unordered_map<std::uint32_t, double> polygonDelta;
-    polygonDelta.reserve(selected.size() * 2);
-    // Facing from every eye of the ball: +1 front, −1 back, 0 unusable.
-    std::unordered_map<std::uint32_t, int> facing;
-    facing.reserve(selected.size() * 2);
     for (std::uint32_t index : selected)
     {
         const OccluderPolygon& polygon = polygons[index];
@@ -72,121 +58,168 @@ void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::ve
         for (const Vec3& v : polygon.vertices)
             nearest = std::min(nearest, projection.viewDepth(v));
         const double delta = projection.deltaFor(shift, std::max(nearest, nearDepth));
-        polygonDelta.emplace(index, delta);
         const double margin = delta + 1e-9 * (1.0 + glm::length(p0));
         int side = eyeDistance > margin ? 1 : eyeDistance < -margin ? -1 : 0;
         if (polygon.oneSided && side < 0)
             side = 0;
-        if (side != 0)
-            facing.emplace(index, side);
+        MaskGroups::PolygonState& state = out.state[index];
+        state = MaskGroups::PolygonState{};
+        state.mark = out.frame;
+        state.facing = std::int8_t(side);
+        state.delta = delta;
     }
-    // Connected components over shared edges between usable polygons of the same facing.
-    std::unordered_map<std::uint32_t, std::uint32_t> component;
-    std::vector<std::uint32_t> order, stack;
-    std::vector<std::uint32_t> starts;
+}
+
+// Connected components over shared edges between usable polygons of the same facing: out.order
+// lists them component by component, out.starts[c] where component c begins.
+void findComponents(const std::vector<OccluderPolygon>& polygons, const std::vector<std::uint32_t>& selected,
+                    MaskGroups& out)
+{
+    const auto usable = [&](std::uint32_t p) { return out.state[p].mark == out.frame && out.state[p].facing != 0; };
+    out.order.clear();
+    out.starts.clear();
     for (std::uint32_t seed : selected)
     {
-        if (!facing.count(seed) || component.count(seed))
+        if (!usable(seed) || out.state[seed].component != ~0u)
             continue;
-        starts.push_back(static_cast<std::uint32_t>(order.size()));
-        const std::uint32_t id = static_cast<std::uint32_t>(starts.size() - 1);
-        component[seed] = id;
-        stack.push_back(seed);
-        while (!stack.empty())
+        out.starts.push_back(static_cast<std::uint32_t>(out.order.size()));
+        const std::uint32_t id = static_cast<std::uint32_t>(out.starts.size() - 1);
+        out.state[seed].component = id;
+        out.stack.push_back(seed);
+        while (!out.stack.empty())
         {
-            const std::uint32_t p = stack.back();
-            stack.pop_back();
-            order.push_back(p);
+            const std::uint32_t p = out.stack.back();
+            out.stack.pop_back();
+            out.order.push_back(p);
             for (std::uint32_t q : polygons[p].neighbours)
             {
-                if (q == NoNeighbour || component.count(q))
+                if (q == NoNeighbour || !usable(q) || out.state[q].component != ~0u ||
+                    out.state[q].facing != out.state[p].facing)
                     continue;
-                const auto f = facing.find(q);
-                if (f == facing.end() || f->second != facing[p])
-                    continue;
-                component[q] = id;
-                stack.push_back(q);
+                out.state[q].component = id;
+                out.stack.push_back(q);
             }
         }
     }
-    starts.push_back(static_cast<std::uint32_t>(order.size()));
+    out.starts.push_back(static_cast<std::uint32_t>(out.order.size()));
+}
+
+// The clipped polygon's plane in eye space from its vertices (n·p + d = 0); false when degenerate.
+bool eyePlane(const std::vector<Vec3>& vertices, Vec3& normal, double& d)
+{
+    normal = Vec3(0.0);
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+    {
+        const Vec3& a = vertices[i];
+        const Vec3& b = vertices[(i + 1) % vertices.size()];
+        normal += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    }
+    const double length = glm::length(normal);
+    if (!(length > 0.0))
+        return false;
+    normal /= length;
+    d = 0.0;
+    for (const Vec3& v : vertices)
+        d -= glm::dot(normal, v);
+    d /= double(vertices.size());
+    return std::abs(d) > 0.0;
+}
+
+// Clips polygon `index` of group `g` and appends it to the group's screen polygons, growing `rect`;
+// false when nothing of it is left.
+bool emitPolygon(const OccluderPolygon& polygon, std::uint32_t g, const std::array<Plane, 5>& planes,
+                 const MaskProjection& projection, MaskGroups& out, glm::dvec4& rect)
+{
+    ClippedPolygon& work = out.work;
+    const std::size_t n = polygon.vertices.size();
+    work.vertices.resize(n);
+    work.neighbour.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        work.vertices[i] = projection.toEye(polygon.vertices[i]);
+        const std::uint32_t q = polygon.neighbours.size() == n ? polygon.neighbours[i] : NoNeighbour;
+        const bool inGroup = q != NoNeighbour && out.state[q].mark == out.frame && out.state[q].component == g;
+        work.neighbour[i] = inGroup ? q : NoNeighbour;
+    }
+    for (const Plane& plane : planes)
+    {
+        clip(work, plane, out.spare);
+        if (work.vertices.size() < 3)
+            return false;
+    }
+    Vec3 normal;
+    double d = 0.0;
+    if (!eyePlane(work.vertices, normal, d))
+        return false;
+    const std::size_t k = out.polygonCount();
+    if (out.polygons.size() <= k)
+        out.polygons.resize(k + 1);
+    ScreenPolygon& screen = out.polygons[k];
+    screen.vertices.clear();
+    for (const Vec3& v : work.vertices)
+    {
+        screen.vertices.push_back(projection.toMask(v));
+        const glm::dvec2& m = screen.vertices.back();
+        rect = glm::dvec4(std::min(rect.x, m.x), std::min(rect.y, m.y), std::max(rect.z, m.x), std::max(rect.w, m.y));
+    }
+    screen.depth = projection.depthPlane(normal, d);
+    out.acrossStart.push_back(static_cast<std::uint32_t>(out.across.size()));
+    out.across.insert(out.across.end(), work.neighbour.begin(), work.neighbour.end());
+    ++out.groupStart.back();
+    return true;
+}
+} // namespace
+
+void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::vector<std::uint32_t>& selected,
+                     const MaskProjection& projection, double nearDepth, double shift, MaskGroups& out)
+{
+    out.groupStart.assign(1, 0u);
+    out.groupDelta.clear();
+    out.groupRect.clear();
+    out.across.clear();
+    out.acrossStart.clear();
+    if (out.state.size() < polygons.size())
+        out.state.resize(polygons.size());
+    if (++out.frame == 0) // wrapped: no stale mark may match
+    {
+        for (MaskGroups::PolygonState& state : out.state)
+            state.mark = 0;
+        out.frame = 1;
+    }
+    classifyFacing(polygons, selected, projection, nearDepth, shift, out);
+    findComponents(polygons, selected, out);
 
     const std::array<Plane, 5> planes = projection.clipPlanes(nearDepth);
-    FlaggedPolygon work, scratch;
-    std::unordered_set<std::uint32_t> emitted;
-    std::vector<std::vector<std::uint32_t>> edgeNeighbours;
-    for (std::size_t g = 0; g + 1 < starts.size(); ++g)
+    for (std::size_t g = 0; g + 1 < out.starts.size(); ++g)
     {
-        out.groupStart.push_back(static_cast<std::uint32_t>(out.polygons.size()));
         double groupDelta = std::numeric_limits<double>::max();
         glm::dvec4 rect(std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
                         std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest());
-        for (std::uint32_t k = starts[g]; k < starts[g + 1]; ++k)
+        out.groupStart.push_back(out.groupStart.back());
+        for (std::uint32_t k = out.starts[g]; k < out.starts[g + 1]; ++k)
         {
-            const std::uint32_t index = order[k];
-            groupDelta = std::min(groupDelta, polygonDelta[index]);
-            const OccluderPolygon& polygon = polygons[index];
-            const std::size_t n = polygon.vertices.size();
-            work.vertices.resize(n);
-            work.neighbour.resize(n);
-            for (std::size_t i = 0; i < n; ++i)
-            {
-                work.vertices[i] = projection.toEye(polygon.vertices[i]);
-                const std::uint32_t q = polygon.neighbours.size() == n ? polygon.neighbours[i] : NoNeighbour;
-                const auto c = q == NoNeighbour ? component.end() : component.find(q);
-                work.neighbour[i] = c != component.end() && c->second == g ? q : NoNeighbour;
-            }
-            for (const Plane& plane : planes)
-            {
-                clip(work, plane, scratch);
-                if (work.vertices.size() < 3)
-                    break;
-            }
-            if (work.vertices.size() < 3)
-                continue;
-            // The plane in eye space from the (clipped) vertices: n·p + d = 0.
-            Vec3 normal(0.0);
-            for (std::size_t i = 0; i < work.vertices.size(); ++i)
-            {
-                const Vec3& a = work.vertices[i];
-                const Vec3& b = work.vertices[(i + 1) % work.vertices.size()];
-                normal += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-            }
-            const double length = glm::length(normal);
-            if (!(length > 0.0))
-                continue;
-            normal /= length;
-            double d = 0.0;
-            for (const Vec3& v : work.vertices)
-                d -= glm::dot(normal, v);
-            d /= double(work.vertices.size());
-            if (!(std::abs(d) > 0.0))
-                continue;
-            ScreenPolygon screen;
-            screen.vertices.reserve(work.vertices.size());
-            for (const Vec3& v : work.vertices)
-            {
-                screen.vertices.push_back(projection.toMask(v));
-                const glm::dvec2& m = screen.vertices.back();
-                rect = glm::dvec4(std::min(rect.x, m.x), std::min(rect.y, m.y), std::max(rect.z, m.x), std::max(rect.w, m.y));
-            }
-            screen.depth = projection.depthPlane(normal, d);
-            out.polygons.push_back(std::move(screen));
-            emitted.insert(index);
-            edgeNeighbours.push_back(work.neighbour);
+            const std::uint32_t index = out.order[k];
+            groupDelta = std::min(groupDelta, out.state[index].delta);
+            if (emitPolygon(polygons[index], std::uint32_t(g), planes, projection, out, rect))
+                out.state[index].emitted = true;
         }
         out.groupDelta.push_back(groupDelta);
         out.groupRect.push_back(rect);
     }
-    out.groupStart.push_back(static_cast<std::uint32_t>(out.polygons.size()));
     // An edge is inside the group's union only if the polygon across it made it to the mask too
     // (a neighbour clipped to a sliver and dropped leaves an outline there).
-    for (std::size_t k = 0; k < out.polygons.size(); ++k)
+    const std::size_t count = out.polygonCount();
+    out.acrossStart.push_back(static_cast<std::uint32_t>(out.across.size()));
+    for (std::size_t k = 0; k < count; ++k)
     {
-        const std::vector<std::uint32_t>& across = edgeNeighbours[k];
-        out.polygons[k].sharedEdge.resize(across.size());
-        for (std::size_t i = 0; i < across.size(); ++i)
-            out.polygons[k].sharedEdge[i] = across[i] != NoNeighbour && emitted.count(across[i]) != 0;
+        ScreenPolygon& screen = out.polygons[k];
+        const std::uint32_t first = out.acrossStart[k], edges = out.acrossStart[k + 1] - first;
+        screen.sharedEdge.resize(edges);
+        for (std::uint32_t i = 0; i < edges; ++i)
+        {
+            const std::uint32_t q = out.across[first + i];
+            screen.sharedEdge[i] = q != NoNeighbour && out.state[q].mark == out.frame && out.state[q].emitted;
+        }
     }
 }
 } // namespace osgVis::core

@@ -15,6 +15,8 @@ namespace osgVis::core
 {
 struct MaskGroups
 {
+    // polygons[0, polygonCount()) are this frame's; the rest are kept so their buffers serve the
+    // next critical frame (a warm frame allocates nothing).
     std::vector<ScreenPolygon> polygons;
     std::vector<std::uint32_t> groupStart; // group g = polygons[groupStart[g], groupStart[g+1])
     // Per group: the eye's freedom δ for which its image moves by at most the shift (from its
@@ -22,11 +24,36 @@ struct MaskGroups
     std::vector<double> groupDelta;
     std::vector<glm::dvec4> groupRect; // x0, y0, x1, y1
     std::size_t groupCount() const { return groupStart.empty() ? 0 : groupStart.size() - 1; }
+    std::size_t polygonCount() const { return groupStart.empty() ? 0 : groupStart.back(); }
+
+    // Per occluder polygon (indexed like the module's polygon list), valid where `mark` equals
+    // `frame`: a new frame invalidates them all at once, without clearing.
+    struct PolygonState
+    {
+        std::uint32_t mark = 0;
+        std::int8_t facing = 0;  // from every eye of the ball: +1 front, -1 back, 0 unusable
+        bool emitted = false;    // made it to the mask this frame
+        std::uint32_t component = ~0u;
+        double delta = 0.0;
+    };
+    std::vector<PolygonState> state;
+    std::uint32_t frame = 0;
+    std::vector<std::uint32_t> order, stack, starts; // polygons by component; the search's stack
+    std::vector<std::uint32_t> across;      // per emitted edge: the polygon across it in its group
+    std::vector<std::uint32_t> acrossStart; // per emitted polygon: its first edge in `across`
+    // A polygon being clipped: eye-space vertices and, per edge, the polygon across it in the group.
+    struct ClippedPolygon
+    {
+        std::vector<Vec3> vertices;
+        std::vector<std::uint32_t> neighbour;
+    };
+    ClippedPolygon work, spare;
 };
 
 // `selected` are indices into `polygons`. `nearDepth` is the clipping depth; `shift` the image
 // shift Δ (mask pixels) that fixes each polygon's δ from its nearest point. A polygon whose plane
-// passes within its δ of the eye is left out. Deterministic.
+// passes within its δ of the eye is left out. Deterministic; allocates nothing once `out` has served
+// as many polygons and vertices.
 void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::vector<std::uint32_t>& selected,
                      const MaskProjection& projection, double nearDepth, double shift, MaskGroups& out);
 } // namespace osgVis::core

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <queue>
 
 namespace osgVis::core
 {
@@ -43,24 +42,26 @@ double importance(const MaskSelectionInput& in, const Aabb& box)
 }
 // Nearest nodes first (ties by node id), gathering the candidate objects each holds until there are
 // enough; `Tree` says how a node's box, objects and children are read.
-template <class Tree>
-std::vector<std::pair<double, ObjectId>> gatherCandidates(const MaskSelectionInput& in, const Tree& tree)
+template <class Tree> void gatherCandidates(const MaskSelectionInput& in, const Tree& tree, MaskSelectionScratch& scratch)
 {
     // Enough candidates to choose from, without walking the whole city.
     const std::size_t wanted = std::size_t(in.count) * 4;
-    struct Entry
+    using Entry = MaskSelectionScratch::Entry;
+    std::vector<Entry>& queue = scratch.queue;
+    std::vector<std::pair<double, ObjectId>>& candidates = scratch.candidates;
+    queue.clear();
+    candidates.clear();
+    const auto push = [&](std::uint32_t node)
     {
-        double distance;
-        std::uint32_t node;
-        bool operator<(const Entry& o) const { return distance > o.distance || (distance == o.distance && node > o.node); }
+        queue.push_back({tree.bounds(node).distance(in.eye), node});
+        std::push_heap(queue.begin(), queue.end());
     };
-    std::priority_queue<Entry> queue;
-    tree.forEachRoot([&](std::uint32_t node) { queue.push({tree.bounds(node).distance(in.eye), node}); });
-    std::vector<std::pair<double, ObjectId>> candidates;
+    tree.forEachRoot(push);
     while (!queue.empty() && candidates.size() < wanted)
     {
-        const Entry top = queue.top();
-        queue.pop();
+        std::pop_heap(queue.begin(), queue.end());
+        const Entry top = queue.back();
+        queue.pop_back();
         if (tree.objectCount(top.node) == 0 || in.view->frustum.classify(tree.bounds(top.node)) == Containment::Outside)
             continue;
         tree.forEachHeld(top.node, [&](ObjectId id)
@@ -71,9 +72,8 @@ std::vector<std::pair<double, ObjectId>> gatherCandidates(const MaskSelectionInp
                                  return;
                              candidates.push_back({importance(in, box), id});
                          });
-        tree.forEachChild(top.node, [&](std::uint32_t child) { queue.push({tree.bounds(child).distance(in.eye), child}); });
+        tree.forEachChild(top.node, push);
     }
-    return candidates;
 }
 
 struct KdTreeNodes
@@ -120,18 +120,20 @@ struct RecordedNodes
 };
 } // namespace
 
-std::vector<ObjectId> selectMaskOccluders(const MaskSelectionInput& in)
+void selectMaskOccluders(const MaskSelectionInput& in, MaskSelectionScratch& scratch, std::vector<ObjectId>& chosen)
 {
-    std::vector<ObjectId> chosen;
+    chosen.clear();
     if (in.count == 0 || (in.hierarchy ? in.hierarchy->objects().empty() : (!in.tree || in.tree->empty())))
-        return chosen;
-    std::vector<std::pair<double, ObjectId>> candidates =
-        in.hierarchy ? gatherCandidates(in, RecordedNodes{*in.hierarchy}) : gatherCandidates(in, KdTreeNodes{*in.tree});
+        return;
+    if (in.hierarchy)
+        gatherCandidates(in, RecordedNodes{*in.hierarchy}, scratch);
+    else
+        gatherCandidates(in, KdTreeNodes{*in.tree}, scratch);
+    std::vector<std::pair<double, ObjectId>>& candidates = scratch.candidates;
     const auto better = [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); };
     const std::size_t keep = std::min<std::size_t>(in.count, candidates.size());
     std::partial_sort(candidates.begin(), candidates.begin() + keep, candidates.end(), better);
     for (std::size_t i = 0; i < keep; ++i)
         chosen.push_back(candidates[i].second);
-    return chosen;
 }
 } // namespace osgVis::core

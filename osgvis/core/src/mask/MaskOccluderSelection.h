@@ -35,6 +35,20 @@ struct MaskSelectionInput
     OccluderMeasure measure = OccluderMeasure::CoverageImportance;
 };
 
-// Object ids, best first. Deterministic.
-std::vector<ObjectId> selectMaskOccluders(const MaskSelectionInput& input);
+// Buffers of the selection, kept between critical frames so a warm one allocates nothing.
+struct MaskSelectionScratch
+{
+    struct Entry
+    {
+        double distance;
+        std::uint32_t node;
+        // A min-heap by distance (ties by node id) under std::push_heap's max-heap order.
+        bool operator<(const Entry& o) const { return distance > o.distance || (distance == o.distance && node > o.node); }
+    };
+    std::vector<Entry> queue;
+    std::vector<std::pair<double, ObjectId>> candidates;
+};
+
+// Object ids into `chosen`, best first. Deterministic.
+void selectMaskOccluders(const MaskSelectionInput& input, MaskSelectionScratch& scratch, std::vector<ObjectId>& chosen);
 } // namespace osgVis::core

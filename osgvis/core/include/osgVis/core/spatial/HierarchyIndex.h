@@ -66,6 +66,13 @@ public:
         const Node* enter(const HierarchyNode& node);
         void leave();
         std::size_t depth() const { return _stack.size(); }
+        /// Begins a new walk from `eye`, keeping this one's buffers (a warm walk allocates nothing).
+        void restart(const Vec3& eye)
+        {
+            _eye = eye;
+            _stack.clear();
+            _entered.clear();
+        }
 
     private:
         struct Level
