@@ -199,6 +199,8 @@ struct MaskModule::Impl
     std::vector<std::uint32_t> selected, nodeStack;
     std::vector<std::pair<double, std::uint32_t>> rankedPolygons;
     std::unique_ptr<HierarchyIndex::Walk> walk; // over `index`, which stays in place
+    std::uint64_t markBudget = 0;               // work units marking may spend this critical frame
+    std::vector<std::uint32_t> groupOrder;      // the order groups are rasterized in
     bool haveMask = false;
     View criticalView;
     Vec3 criticalDirection{0.0};
@@ -548,10 +550,34 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
         fillTileDeltas(shift);
         m.mask.reset(m.projection.width(), m.projection.height());
         const bool perOccluder = _options.shrink == MaskShrink::PerOccluder;
-        for (std::size_t g = 0; g < m.groups.groupCount(); ++g)
+        // A group left out only hides less (its δ still bounds the tiles it reaches: smaller is safe).
+        const std::uint64_t budget =
+            _options.workBudget == 0 ? std::numeric_limits<std::uint64_t>::max() : _options.workBudget;
+        const std::uint64_t rasterBudget = budget == std::numeric_limits<std::uint64_t>::max() ? budget : budget / 5 * 3;
+        // Largest groups first (most tiles: they hide the most), ties by index: deterministic.
+        std::vector<std::uint32_t>& order = m.groupOrder;
+        order.resize(m.groups.groupCount());
+        for (std::uint32_t g = 0; g < order.size(); ++g)
+            order[g] = g;
+        if (_options.workBudget != 0)
+            std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+                const std::uint64_t wa = m.groups.groupWork[a], wb = m.groups.groupWork[b];
+                return wa > wb || (wa == wb && a < b);
+            });
+        for (const std::uint32_t g : order)
+        {
+            if (m.groups.groupWork[g] > rasterBudget - stats.rasterWork)
+            {
+                ++stats.groupsSkipped;
+                stats.overBudget = true;
+                continue;
+            }
+            stats.rasterWork += m.groups.groupWork[g];
             rasterizeOccluderGroup(m.mask, m.groups.polygons.data() + m.groups.groupStart[g],
                                    m.groups.groupStart[g + 1] - m.groups.groupStart[g], perOccluder ? shift : 0.0,
                                    m.scratch);
+        }
+        m.markBudget = budget - stats.rasterWork;
         if (!perOccluder && shift > 0.0)
             m.mask.shrinkUnion(static_cast<std::uint32_t>(std::ceil(shift)));
         stats.rasterizeMs = millisecondsSince(start);
@@ -570,6 +596,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
         m.stamps.clear();
         markHidden(stats);
         stats.markMs = millisecondsSince(start);
+
         // Stamps run out one by one; the next critical frame comes when the marks of half the
         // hidden objects have expired (or at once when nothing was marked).
         double deltaMin = std::numeric_limits<double>::max(), deltaMax = 0.0;
@@ -724,6 +751,16 @@ void MaskModule::markHidden(Statistics& stats)
     for (double delta : m.groups.groupDelta)
         outOfViewDelta = std::max(outOfViewDelta, delta);
     const View& view = m.criticalView;
+    const auto chargeBoxTest = [&](Statistics& s)
+    {
+        if (_options.boxTestWork > m.markBudget - s.markWork)
+        {
+            s.overBudget = true;
+            return false;
+        }
+        s.markWork += _options.boxTestWork;
+        return true;
+    };
     // A node whose whole box is decided: out of view for every eye within outOfViewDelta (the
     // frustum's planes move with the eye, its orientation kept), or behind the mask. Out-of-view
     // marks do not decide when the next critical frame comes (weight 0). markNode(until) marks it.
@@ -739,6 +776,8 @@ void MaskModule::markHidden(Statistics& stats)
             }
             return true;
         }
+        if (!chargeBoxTest(stats))
+            return true; // out of budget: left unmarked, so visible, and not descended into
         ++stats.nodesTested;
         double delta = 0.0;
         if (!objectBehindMask(box, 0, delta))
@@ -755,7 +794,8 @@ void MaskModule::markHidden(Statistics& stats)
     const auto testObject = [&](ObjectId id, auto&& markObject)
     {
         double delta = 0.0;
-        if (m.moving[id] || !objectBehindMask(_scene->objects[id].bounds, kObjectSplits, delta))
+        if (m.moving[id] || !chargeBoxTest(stats) ||
+            !objectBehindMask(_scene->objects[id].bounds, kObjectSplits, delta))
             return;
         const double until = stampFor(delta);
         markObject(until);

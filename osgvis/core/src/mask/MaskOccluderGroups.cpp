@@ -156,12 +156,22 @@ bool emitPolygon(const OccluderPolygon& polygon, std::uint32_t g, const std::arr
         out.polygons.resize(k + 1);
     ScreenPolygon& screen = out.polygons[k];
     screen.vertices.clear();
+    glm::dvec4 own(std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+                   std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest());
     for (const Vec3& v : work.vertices)
     {
         screen.vertices.push_back(projection.toMask(v));
         const glm::dvec2& m = screen.vertices.back();
-        rect = glm::dvec4(std::min(rect.x, m.x), std::min(rect.y, m.y), std::max(rect.z, m.x), std::max(rect.w, m.y));
+        own = glm::dvec4(std::min(own.x, m.x), std::min(own.y, m.y), std::max(own.z, m.x), std::max(own.w, m.y));
     }
+    rect = glm::dvec4(std::min(rect.x, own.x), std::min(rect.y, own.y), std::max(rect.z, own.z), std::max(rect.w, own.w));
+    // Tiles its rectangle reaches within the mask (clipping keeps it within the grown frame).
+    const auto tiles = [](double lo, double hi, double size)
+    {
+        const double a = std::clamp(lo, 0.0, size), b = std::clamp(hi, 0.0, size);
+        return std::floor(b / 8.0) - std::floor(a / 8.0) + 1.0;
+    };
+    out.emittedWork = 1 + std::uint64_t(tiles(own.x, own.z, projection.width()) * tiles(own.y, own.w, projection.height()));
     screen.depth = projection.depthPlane(normal, d);
     out.acrossStart.push_back(static_cast<std::uint32_t>(out.across.size()));
     out.across.insert(out.across.end(), work.neighbour.begin(), work.neighbour.end());
@@ -176,6 +186,7 @@ void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::ve
     out.groupStart.assign(1, 0u);
     out.groupDelta.clear();
     out.groupRect.clear();
+    out.groupWork.clear();
     out.across.clear();
     out.acrossStart.clear();
     if (out.state.size() < polygons.size())
@@ -193,6 +204,7 @@ void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::ve
     for (std::size_t g = 0; g + 1 < out.starts.size(); ++g)
     {
         double groupDelta = std::numeric_limits<double>::max();
+        std::uint64_t work = 0;
         glm::dvec4 rect(std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
                         std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest());
         out.groupStart.push_back(out.groupStart.back());
@@ -201,9 +213,13 @@ void buildMaskGroups(const std::vector<OccluderPolygon>& polygons, const std::ve
             const std::uint32_t index = out.order[k];
             groupDelta = std::min(groupDelta, out.state[index].delta);
             if (emitPolygon(polygons[index], std::uint32_t(g), planes, projection, out, rect))
+            {
                 out.state[index].emitted = true;
+                work += out.emittedWork;
+            }
         }
         out.groupDelta.push_back(groupDelta);
+        out.groupWork.push_back(work);
         out.groupRect.push_back(rect);
     }
     // An edge is inside the group's union only if the polygon across it made it to the mask too

@@ -23,6 +23,9 @@ struct MaskGroups
     // nearest point), and its bounding rectangle in mask coordinates.
     std::vector<double> groupDelta;
     std::vector<glm::dvec4> groupRect; // x0, y0, x1, y1
+    // Per group: its rasterization work, Σ over its polygons of the 8 × 8 tiles their bounding
+    // rectangles reach, plus one per polygon (the module's work measure, docs/mask.md "Budget").
+    std::vector<std::uint64_t> groupWork;
     std::size_t groupCount() const { return groupStart.empty() ? 0 : groupStart.size() - 1; }
     std::size_t polygonCount() const { return groupStart.empty() ? 0 : groupStart.back(); }
 
@@ -41,6 +44,7 @@ struct MaskGroups
     std::vector<std::uint32_t> order, stack, starts; // polygons by component; the search's stack
     std::vector<std::uint32_t> across;      // per emitted edge: the polygon across it in its group
     std::vector<std::uint32_t> acrossStart; // per emitted polygon: its first edge in `across`
+    std::uint64_t emittedWork = 0;          // work of the polygon emitted last (emitPolygon)
     // A polygon being clipped: eye-space vertices and, per edge, the polygon across it in the group.
     struct ClippedPolygon
     {

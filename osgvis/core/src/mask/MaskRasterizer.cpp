@@ -25,6 +25,7 @@ struct MaskRasterScratch::Tiles
     std::vector<maskraster::Shape> shapes;
     std::vector<float> nearest;
     std::vector<int> spans;
+    std::vector<std::uint32_t> rowPolygons; // the polygons touching the current tile row
 };
 
 MaskRasterScratch::MaskRasterScratch() = default;
@@ -338,9 +339,13 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
     const PixelRange maskRange{0, 0, int(mask.width()) - 1, int(mask.height()) - 1};
     TileWork work;
     std::size_t covered = 0;
+    std::vector<std::uint32_t>& rowPolygons = scratch.tiles->rowPolygons;
     for (int ty = region.y0 / TileSize; ty <= region.y1 / TileSize; ++ty)
     {
         int rowFirst = std::numeric_limits<int>::max(), rowLast = -1;
+        // Tiles of the row look only at the polygons touching the row: a large group spans many
+        // rows, each of its polygons few.
+        rowPolygons.clear();
         for (std::size_t i = 0; i < count; ++i)
         {
             int& first = spans[4 * i];
@@ -367,6 +372,7 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
                 insideSpan(setups[i], ty * TileSize, std::min(ty * TileSize + TileSize, int(mask.height())) - 1,
                            spans[4 * i + 2], spans[4 * i + 3]);
             }
+            rowPolygons.push_back(std::uint32_t(i));
         }
         for (int tx = rowFirst; tx <= rowLast; ++tx)
         {
@@ -387,7 +393,7 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
             {
                 // The tighter test over the tile alone, for groups whose polygons lie at different depths.
                 float tileNearest = InfiniteDepth;
-                for (std::size_t i = 0; i < count; ++i)
+                for (std::uint32_t i : rowPolygons)
                     if (shapes[i] == Shape::Convex && spans[4 * i] <= tx && tx <= spans[4 * i + 1])
                         tileNearest = std::min(tileNearest, nearest[i]);
                 if (!(tileNearest < bound))
@@ -395,7 +401,7 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
             }
             work.touched = work.vetoed = 0;
             work.contributors = 0;
-            for (std::size_t i = 0; i < count; ++i)
+            for (std::uint32_t i : rowPolygons)
             {
                 if (tx < spans[4 * i] || tx > spans[4 * i + 1])
                     continue;
