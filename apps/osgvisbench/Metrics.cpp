@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "Metrics.h"
 
+#include "Fnv1a.h"
 #include "MisdrawnPixels.h"
 #include "SampleStatistics.h"
 
@@ -40,13 +41,13 @@ struct CullTally
 // FNV-1a 64 over the ids of the set in ascending order, each as 4 little-endian bytes.
 std::uint64_t setDigest(const core::VisibleSet& set)
 {
-    std::uint64_t hash = 0xcbf29ce484222325ull;
+    std::uint64_t hash = Fnv1aSeed;
     for (const core::ObjectId id : set.ids())
-        for (int byte = 0; byte < 4; ++byte)
-        {
-            hash ^= (id >> (8 * byte)) & 0xffu;
-            hash *= 0x100000001b3ull;
-        }
+    {
+        const unsigned char bytes[4] = {static_cast<unsigned char>(id), static_cast<unsigned char>(id >> 8),
+                                        static_cast<unsigned char>(id >> 16), static_cast<unsigned char>(id >> 24)};
+        hash = fnv1a(hash, bytes, sizeof bytes);
+    }
     return hash;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "OracleCache.h"
 
+#include "Fnv1a.h"
+
 #include <osgVis/core/scene/SceneFingerprint.h>
 
 #include <cstdio>
@@ -16,22 +18,14 @@ namespace
 {
 constexpr char Magic[8] = {'O', 'S', 'G', 'V', 'O', 'R', 'C', '1'};
 
-std::uint64_t mix(std::uint64_t hash, const void* data, std::size_t size)
-{
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i)
-        hash = (hash ^ bytes[i]) * 0x100000001b3ull;
-    return hash;
-}
-
 template <typename T> std::uint64_t mixValue(std::uint64_t hash, const T& value)
 {
-    return mix(hash, &value, sizeof value);
+    return fnv1a(hash, &value, sizeof value);
 }
 
 std::uint64_t mixMatrix(std::uint64_t hash, const osg::Matrixd& matrix)
 {
-    return mix(hash, matrix.ptr(), 16 * sizeof(double));
+    return fnv1a(hash, matrix.ptr(), 16 * sizeof(double));
 }
 
 class Writer
@@ -116,7 +110,7 @@ bool readView(Reader& in, std::size_t objectCount, ViewReference& view)
 std::uint64_t oracleCacheKey(const ExtractedScene& withTriangles, const std::vector<BenchView>& views,
                              unsigned width, unsigned height, unsigned supersample)
 {
-    std::uint64_t hash = 0xcbf29ce484222325ull;
+    std::uint64_t hash = Fnv1aSeed;
     hash = mixValue(hash, core::sceneGeometryFingerprint(withTriangles.scene));
     hash = mixValue(hash, std::uint64_t(withTriangles.scene.objects.size()));
     hash = mixValue(hash, std::uint64_t(views.size()));
