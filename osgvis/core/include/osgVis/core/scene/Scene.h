@@ -89,6 +89,34 @@ struct Portal
     std::uint32_t cellA = 0, cellB = 0;
 };
 
+/// A box of space a model proves solid (docs/cellportal.md, "Solid space"): a convex solid of the
+/// model (a Quake 3 brush, say) that only its faces let a sightline into. Bit 2*axis (low face) or
+/// 2*axis+1 (high face) of `opaqueFaces` says the face is drawn opaque, from both sides, wherever
+/// it faces open space that eyes can reach (SolidSpace::eyePoints); a face without its bit (never
+/// drawn, sky, translucent) lets sightlines in.
+struct SolidBox
+{
+    Aabb box;
+    std::uint8_t opaqueFaces = 0;
+};
+
+/// What a model states about solid space, for cells and portals made from it (subdivideCells with
+/// SubdivisionOptions::fromSolids). Empty when the model states nothing: then nothing is solid.
+struct SolidSpace
+{
+    std::vector<SolidBox> boxes;
+    /// Points in space an eye can reach (a level's spawn points): only open space connected to one
+    /// of them, and not to the outside of the model's bounds, counts as where drawn faces are kept
+    /// (a level compiler drops faces that face the outside). With none, no face is trusted.
+    std::vector<Vec3> eyePoints;
+    /// Bounds of other solids the model has but that prove nothing here (not boxes, or of
+    /// uncertain kind): a level compiler may have dropped the parts of faces they cover, so no face
+    /// of a box is trusted where it meets one of them.
+    std::vector<Aabb> unproven;
+
+    bool empty() const { return boxes.empty(); }
+};
+
 struct Scene
 {
     std::vector<SceneObject> objects;
@@ -96,6 +124,8 @@ struct Scene
     std::vector<OccluderCandidate> occluders;
     std::vector<Cell> cells;
     std::vector<Portal> portals;
+    /// Solid space the model proves (for cells and portals from it; the per-frame modules ignore it).
+    SolidSpace solids;
     /// The renderer's own hierarchy over the objects, when it hands one to the modules (may be null).
     std::shared_ptr<const TraversalHierarchy> hierarchy;
     /// Connectivity a renderer supplied, per object (checked, not trusted: WingedEdgeMesh::closed).
