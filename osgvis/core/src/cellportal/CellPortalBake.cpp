@@ -274,6 +274,8 @@ std::string canonicalBakeOptions(const BakeOptions& options)
     const SubdivisionOptions& s = options.subdivision;
     return "min-coverage=" + number(s.minCoverage) + " min-face-area=" + number(s.minFaceArea) +
            " min-cell-size=" + number(s.minCellSize) + " max-depth=" + std::to_string(s.maxDepth) +
-           " max-cells=" + std::to_string(s.maxCells) + " stab-budget=" + std::to_string(options.stabBudget);
+           " max-cells=" + std::to_string(s.maxCells) + " stab-budget=" + std::to_string(options.stabBudget) +
+           // Only when set, so that the files baked before the option read back equal.
+           (s.fromSolids ? " from-solids=1" : "");
 }
 } // namespace osgVis::core

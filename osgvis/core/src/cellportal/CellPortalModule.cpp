@@ -71,6 +71,25 @@ struct CellPortalModule::Impl
     std::vector<Aabb> objectBounds;
     double tolerance = 0.0;
     Aabb subdivided; // union of the cells: outside it an eye is in no cell
+    // Whether the cells leave gaps inside the subdivided box (solid space: kd leaves naming no
+    // cell): then the eye's reach must lie wholly in cells, or it may look out of solid space.
+    bool gaps = false;
+
+    // Whether `box` lies in the union of `cells` (disjoint boxes): their overlaps fill its volume.
+    bool covered(const Aabb& box, const std::vector<std::uint32_t>& cells) const
+    {
+        const Vec3 size = box.extent();
+        const double volume = size.x * size.y * size.z;
+        double inCells = 0.0;
+        for (std::uint32_t c : cells)
+        {
+            const Vec3 overlap = glm::max(glm::min(box.max, data->graph.cells[c].max) -
+                                              glm::max(box.min, data->graph.cells[c].min),
+                                          Vec3(0.0));
+            inCells += overlap.x * overlap.y * overlap.z;
+        }
+        return inCells >= volume * (1.0 - 1e-9);
+    }
     DebugRecord* record = nullptr;
 
     // The eye's source cell, cached while the eye stays in it: each stab-tree node's portal as it
@@ -281,6 +300,8 @@ void CellPortalModule::setScene(const Scene& scene)
     impl.subdivided = Aabb();
     for (const Aabb& cell : impl.data->graph.cells)
         impl.subdivided.expand(cell);
+    impl.gaps = std::any_of(impl.data->graph.nodes.begin(), impl.data->graph.nodes.end(),
+                            [](const CellGraph::KdNode& node) { return node.axis > 2 && node.children[0] == NoCell; });
     impl.objects = assignObjectsToCells(scene, impl.data->graph, impl.tolerance);
     impl.objectBounds.resize(scene.objects.size());
     for (const SceneObject& object : scene.objects)
@@ -300,9 +321,12 @@ void CellPortalModule::cull(const View& view, VisibleSet& visible)
     impl.eyeCells.clear();
     // Geometry closer than the near plane is clipped away, so the eye sees through a wall it
     // almost touches: every cell within the near plane's reach counts as an eye cell.
-    impl.data->graph.locate(view.eye, std::max(impl.tolerance, nearPlaneReach(view)), impl.eyeCells);
+    const double reach = std::max(impl.tolerance, nearPlaneReach(view));
+    impl.data->graph.locate(view.eye, reach, impl.eyeCells);
     if (impl.eyeCells.empty())
         return; // outside the subdivided space: everything may be seen
+    if (impl.gaps && !impl.covered({view.eye - Vec3(reach), view.eye + Vec3(reach)}, impl.eyeCells))
+        return; // the near plane may reach into solid space and look out of it anywhere
     impl.viewPlanes.assign({view.frustum.plane(Frustum::LEFT), view.frustum.plane(Frustum::RIGHT),
                             view.frustum.plane(Frustum::BOTTOM), view.frustum.plane(Frustum::TOP)});
     impl.kept.reset(visible.capacity());
@@ -328,8 +352,11 @@ void CellPortalModule::cullRegion(const ViewRegion& region, VisibleSet& visible)
     if (!impl.subdivided.contains(region.eyes.min) || !impl.subdivided.contains(region.eyes.max))
         return;
     impl.eyeCells.clear();
-    impl.data->graph.cellsOverlapping(region.eyes, std::max(impl.tolerance, region.maxNearReach), impl.eyeCells);
+    const double reach = std::max(impl.tolerance, region.maxNearReach);
+    impl.data->graph.cellsOverlapping(region.eyes, reach, impl.eyeCells);
     if (impl.eyeCells.empty())
+        return;
+    if (impl.gaps && !impl.covered({region.eyes.min - Vec3(reach), region.eyes.max + Vec3(reach)}, impl.eyeCells))
         return;
     impl.kept.reset(visible.capacity());
     for (ObjectId id : impl.objects.everywhere)

@@ -24,6 +24,12 @@ struct SubdivisionOptions
     double minCellSize = 1e-4;
     std::uint32_t maxDepth = 40;
     std::uint32_t maxCells = 200000;
+    /// Cells from the solid space the model states (Scene::solids; docs/cellportal.md, "Solid
+    /// space") instead of its opaque axial faces: the kd-tree splits at the faces of solid boxes,
+    /// cells are the leaves sightlines can reach, portals the faces between them no opaque face of
+    /// a solid closes; every face plane of a solid may split (minCoverage and minFaceArea only
+    /// apply to faces), the cell-size, depth and cell limits apply. Off: the faces decide.
+    bool fromSolids = false;
 };
 
 /// One opaque axial face of the model (both sides opaque unless the source culls faces).
@@ -50,4 +56,23 @@ std::vector<OpaqueFace> findOpaqueAxialFaces(const Scene& scene);
 /// onto the plane through its centre across its dominant normal axis (low cell: smaller centre on
 /// that axis). Portals naming one cell twice or a cell out of range are ignored.
 CellGraph subdivideCells(const Scene& scene, const SubdivisionOptions& options = {});
+
+/// What the subdivision from solid space found, for `osgvispvs --explain` and the docs' tables.
+struct SolidSubdivisionReport
+{
+    std::size_t solidBoxes = 0, eyePoints = 0, unproven = 0; ///< what the scene stated
+    std::size_t leaves = 0;        ///< kd leaves
+    std::size_t solidLeaves = 0;   ///< inside a solid box
+    std::size_t mixedLeaves = 0;   ///< partly solid, no split worth making: open
+    std::size_t eyeSpaceLeaves = 0; ///< open, enclosed, connected to an eye point: faces trusted
+    std::size_t outsideLeaves = 0; ///< open but connected to the bounds' outside or to no eye point
+    std::size_t reachedSolidLeaves = 0; ///< solid leaves a sightline from eye space may enter (cells)
+    std::size_t unreachedOpenLeaves = 0; ///< open leaves no sightline from eye space reaches (no cell)
+    std::size_t closedFaces = 0;   ///< leaf faces closed by an opaque face of a solid
+    std::size_t cells = 0, portals = 0;
+};
+
+/// The subdivision from solid space (what subdivideCells does with SubdivisionOptions::fromSolids
+/// and no stated cells), reporting what it found.
+CellGraph subdivideSolidCells(const Scene& scene, const SubdivisionOptions& options, SolidSubdivisionReport* report);
 } // namespace osgVis::core
