@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "BakeCommand.h"
+#include "SubdivisionExplanation.h"
 
 #include "BakeJob.h"
 #include "BakeRun.h"
@@ -34,6 +35,8 @@ PreparedBake prepare(const PvsToolOptions& o, bool quiet)
     PreparedBake prepared;
     prepared.loaded = loadModelToBake(o, quiet);
     const core::Scene& scene = prepared.loaded.extracted->scene;
+    if (o.explain && !quiet && o.method != "multifocal")
+        explainSubdivision(scene, o.bake.subdivision, std::cout);
     prepared.job = o.method == "multifocal" ? makeViewCellJob(o, scene) : makeCellPortalJob(o, scene);
     return prepared;
 }

@@ -96,6 +96,10 @@ std::string pvsToolUsage()
            "                         counts every reachable cell visible (default " +
            std::to_string(defaults.stabBudget) +
            ")\n"
+           "  --cells-from S         faces (default): cells split at the model's opaque axis-aligned faces;\n"
+           "                         solids: cells are the open space between the solids the model proves\n"
+           "                         (a Quake 3 level's box brushes; docs/cellportal.md, \"Solid space\")\n"
+           "  --explain              say what the subdivision found and, where few cells came out, why\n"
            "  --threads N            worker threads, 0 = all cores (default 0); results do not depend on it\n"
            "  --method M             cellportal (default) or multifocal: a PVS per view cell, for every\n"
            "                         eye in the cell (Marsden & Guibas; docs/multifocal.md), no portals\n"
@@ -187,6 +191,15 @@ PvsToolOptions parsePvsToolOptions(int argc, char** argv, const char* (*environm
             o.jsonFile = value();
         else if (arg == "--progress")
             o.forceProgress = true;
+        else if (arg == "--explain")
+            o.explain = true;
+        else if (arg == "--cells-from")
+        {
+            const std::string from = value();
+            if (from != "faces" && from != "solids")
+                throw UsageError("--cells-from is faces or solids, got '" + from + "'");
+            o.bake.subdivision.fromSolids = from == "solids";
+        }
         else if (arg == "--min-coverage")
             o.bake.subdivision.minCoverage = parseNumber(arg, value(), 0.0, 1.0);
         else if (arg == "--min-face-area")
@@ -264,6 +277,8 @@ PvsToolOptions parsePvsToolOptions(int argc, char** argv, const char* (*environm
     const bool viewCellOptions = o.grid || !o.walkFile.empty() || o.cellSize.x > 0.0 || o.nearDistance;
     if (o.method != "multifocal" && viewCellOptions)
         throw UsageError("--grid, --walk, --cell-size and --near go with --method multifocal");
+    if (o.method == "multifocal" && o.bake.subdivision.fromSolids)
+        throw UsageError("--cells-from goes with --method cellportal");
     if (o.cellRange && o.shard)
         throw UsageError("give --cells or --shard, not both");
     if (o.grid && !o.walkFile.empty())

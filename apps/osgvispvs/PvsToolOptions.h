@@ -23,7 +23,8 @@ struct PvsToolOptions
     std::string modelFile;      // the one positional argument (any format osgDB reads)
     std::string pvsFile;        // -o / --output
     std::string jsonFile;       // --json FILE: the statistics as JSON
-    core::BakeOptions bake;     // --min-coverage, --min-face-area, --min-cell-size, --max-cells, --stab-budget, --threads
+    core::BakeOptions bake;     // --min-coverage, --min-face-area, --min-cell-size, --max-cells, --stab-budget, --threads,
+                                // --cells-from
     std::string method = "cellportal"; // --method cellportal|multifocal
     // --method multifocal: the view cells and their planes.
     core::MultifocalOptions multifocal; // --plane-resolution, --planes
@@ -36,6 +37,7 @@ struct PvsToolOptions
     std::optional<std::pair<std::uint32_t, std::uint32_t>> shard;     // --shard K/N (1 <= K <= N), or from Slurm
     std::uint32_t unitCells = 0; // --unit-cells N: cells per work unit; 0: the method's default
     bool forceProgress = false; // --progress: draw the bar even when stderr is no terminal
+    bool explain = false;       // --explain: say what the subdivision found and why
     bool help = false;          // --help
     bool version = false;       // --version
 };

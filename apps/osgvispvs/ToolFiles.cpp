@@ -3,9 +3,12 @@
 
 #include <osgVis/ModelRepair>
 #include <osgVis/PagedDatabase>
+#include <osgVis/Q3Solids>
 
 #include <osgDB/ReadFile>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -38,6 +41,22 @@ std::string modelPathFromPvs(const std::string& modelFile, const std::string& pv
     return relative.empty() ? model.generic_string() : relative.generic_string();
 }
 
+core::SolidSpace statedSolids(const std::string& modelFile)
+{
+    std::string extension = fs::path(modelFile).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension != ".bsp")
+        return {}; // nothing else states solids yet: --explain says so
+    try
+    {
+        return readQ3Solids(modelFile);
+    }
+    catch (const std::exception& e)
+    {
+        throw ToolError(std::string("--cells-from solids: ") + e.what());
+    }
+}
+
 LoadedModel loadModelToBake(const PvsToolOptions& o, bool workerRank)
 {
     std::error_code error;
@@ -68,6 +87,8 @@ LoadedModel loadModelToBake(const PvsToolOptions& o, bool workerRank)
     loaded.extracted = extractScene(*loaded.model, extraction);
     if (loaded.extracted->scene.objects.empty())
         throw ToolError("model '" + o.modelFile + "' holds no drawable objects: nothing to bake");
+    if (o.bake.subdivision.fromSolids)
+        loaded.extracted->scene.solids = statedSolids(o.modelFile);
     return loaded;
 }
 } // namespace osgVis::pvstool

@@ -35,4 +35,7 @@ struct LoadedModel
 // `workerRank`: an MPI rank other than 0, which writes no file (its machine may not even see the
 // output's folder) and leaves the note on repairs to rank 0.
 LoadedModel loadModelToBake(const PvsToolOptions& options, bool workerRank = false);
+// The solid space `modelFile` states: a Quake 3 level's (.bsp) brushes and spawn points; nothing
+// for other models. Throws ToolError for a level whose brushes cannot be read.
+core::SolidSpace statedSolids(const std::string& modelFile);
 } // namespace osgVis::pvstool

@@ -10,12 +10,15 @@
 
 #include <osgVis/Version>
 
+#include <PluginPaths.h>
+
 #include <iostream>
 
 using namespace osgVis::pvstool;
 
 int main(int argc, char** argv)
 {
+    osgVis::apps::addOsgVisPluginPaths(); // .gltf/.glb (and .pvs) load from the build tree and after install
     if (argc > 1 && std::string(argv[1]) == "merge")
         return runPvsMerge(std::vector<std::string>(argv + 2, argv + argc));
     PvsToolOptions options;

@@ -151,6 +151,8 @@ TEST(PvsTool, RefusesBadInputNamingIt)
     expectFailure("m.osgb --min-cell-size -0.1" + o, 2, "--min-cell-size must lie between 0 and 1");
     expectFailure("m.osgb --frobnicate" + o, 2, "unknown argument '--frobnicate'");
     expectFailure("a.osgb b.osgb" + o, 2, "one model only");
+    expectFailure("m.osgb --cells-from voxels" + o, 2, "--cells-from is faces or solids, got 'voxels'");
+    expectFailure("m.osgb --method multifocal --cells-from solids" + o, 2, "--cells-from goes with --method cellportal");
 
     // Files and scenes: exit 1.
     expectFailure(quoted(dir / "missing.osgb") + o, 1, "model file '" + (dir / "missing.osgb").string() + "' does not exist");
@@ -164,6 +166,25 @@ TEST(PvsTool, RefusesBadInputNamingIt)
     expectFailure(quoted(empty) + o + " --json /nonexistent-osgvis-dir/s.json", 1,
                   "cannot write the JSON file '/nonexistent-osgvis-dir/s.json'");
     EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(PvsTool, ExplainsWhyAModelGivesOneCellAndReadsGltf)
+{
+    // The glTF plugin is osgVis's own: osgvispvs finds it in the build tree as the other apps do.
+    const fs::path engine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+    if (!fs::exists(engine))
+        GTEST_SKIP() << engine << " is missing (assimp-testmodels)";
+    const fs::path dir = scratchDirectory("apps", "PvsToolExplain");
+    const AppRun faces = osgvispvs(quoted(engine) + " --explain -o " + quoted(dir / "faces.pvs"));
+    ASSERT_EQ(faces.exitCode, 0) << faces.output;
+    EXPECT_NE(faces.output.find("subdivision from faces: "), std::string::npos) << faces.output;
+    EXPECT_NE(faces.output.find("try --cells-from solids"), std::string::npos) << faces.output;
+    const AppRun solids = osgvispvs(quoted(engine) + " --cells-from solids --explain -o " + quoted(dir / "solids.pvs"));
+    ASSERT_EQ(solids.exitCode, 0) << solids.output;
+    EXPECT_NE(solids.output.find("subdivision from solids: 0 solid boxes"), std::string::npos) << solids.output;
+    EXPECT_NE(solids.output.find("the model states no solid space"), std::string::npos) << solids.output;
+    EXPECT_EQ(printedAfter(solids.output, "cells:"), "1") << solids.output;
+    EXPECT_NE(osgVis::core::readPvsFile((dir / "solids.pvs").string()).options.find("from-solids=1"), std::string::npos);
 }
 
 TEST(PvsTool, SameBakeGivesTheSameBytesAndRecordsIt)
