@@ -179,6 +179,32 @@ TEST(SolidCells, WithoutEyePointsOrWhereAnUnprovenSolidMeetsItNoFaceIsTrusted)
     EXPECT_FALSE(cellsAt(graph, (wall.min + wall.max) * 0.5).empty());
 }
 
+TEST(SolidCells, APocketAnUnprovenSolidSealsIsNoEyeSpace)
+{
+    // Room 1's door is blocked by a slanted solid the model states only as an unproven bound: the
+    // boxes alone would join room 1 to room 0's eye point through the door, but a level compiler
+    // may have filled room 1 as unreached and dropped its faces. Room 1 must trust no face.
+    RoomGrid grid = roomGrid(2, 1, 3);
+    grid.scene.solids.eyePoints = {{2.0, 2.0, 1.5}};
+    const Aabb door = grid.scene.solids.boxes[grid.innerWallSolids[2]].box; // the lintel: x, y of the door
+    grid.scene.solids.unproven.push_back({{door.min.x, door.min.y, 0.0}, {door.max.x, door.max.y, 2.0}});
+    SolidSubdivisionReport report;
+    const CellGraph graph = subdivideSolidCells(grid.scene, fromSolids(), &report);
+    const std::vector<std::uint32_t> room1 = cellsAt(graph, {6.0, 2.0, 1.5});
+    ASSERT_EQ(room1.size(), 1u);
+    // Room 1's walls are cells then: sightlines from room 1 (or through the door) may enter them.
+    const std::vector<bool> fromRoom1 = connected(graph, room1[0]);
+    const std::vector<std::uint32_t> farWall = cellsAt(graph, {8.0, 2.0, 1.5});
+    ASSERT_FALSE(farWall.empty());
+    EXPECT_TRUE(fromRoom1[farWall[0]]);
+    // Room 0 still trusts its own walls: no portal from it into its west wall (which sightlines
+    // from room 1 may reach through the floor and ceiling slabs the rooms share).
+    const std::uint32_t room0 = cellsAt(graph, {2.0, 2.0, 1.5})[0];
+    for (std::uint32_t wall : cellsAt(graph, {0.0, 2.0, 1.5}))
+        for (std::uint32_t p : graph.cellPortals[room0])
+            EXPECT_NE(graph.portals[p].otherCell(room0), wall);
+}
+
 TEST(SolidCells, ASlitThinnerThanACellStaysOpen)
 {
     // Two rooms and a wall between them with no door, only a 0.5 mm slit from floor to ceiling.

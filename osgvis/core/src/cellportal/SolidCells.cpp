@@ -109,16 +109,32 @@ std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t x)
     return x;
 }
 
-// Per leaf: open space connected (through open and mixed leaves) to an eye point and not to the
-// outside of the root box. Only there does a level compiler keep the faces of solids.
+// Per leaf: open space connected (through open leaves) to an eye point and not to the
+// outside of the root box. Only there does a level compiler keep the faces of solids. A partly
+// solid leaf, or one an unproven solid meets, is never eye space and joins nothing: a solid there
+// may seal a pocket no eye reaches, whose faces the compiler drops as it drops the outside's
+// (q3map2 fills every space its entities do not reach), and the boxes alone would count the pocket
+// as reachable through it.
 std::vector<bool> eyeSpace(const Leaves& leaves, const SolidSpace& solids, double tolerance)
 {
     const CellGraph& graph = leaves.graph;
     const std::size_t count = graph.cells.size();
+    std::vector<bool> joins(count);
+    std::vector<std::uint32_t> found;
+    for (std::uint32_t leaf = 0; leaf < count; ++leaf)
+        joins[leaf] = leaves.kind[leaf] == LeafKind::Open;
+    for (const Aabb& unproven : solids.unproven)
+    {
+        found.clear();
+        graph.cellsOverlapping(unproven, 0.0, found);
+        for (std::uint32_t leaf : found)
+            if (interiorsMeet(unproven, graph.cells[leaf], tolerance))
+                joins[leaf] = false;
+    }
     std::vector<std::uint32_t> parent(count);
     std::iota(parent.begin(), parent.end(), 0u);
     for (const CellPortal& p : graph.portals)
-        if (leaves.kind[p.lowCell] != LeafKind::Solid && leaves.kind[p.highCell] != LeafKind::Solid)
+        if (joins[p.lowCell] && joins[p.highCell])
             parent[findRoot(parent, p.lowCell)] = findRoot(parent, p.highCell);
 
     std::vector<bool> outside(count, false), seeded(count, false);
@@ -129,7 +145,7 @@ std::vector<bool> eyeSpace(const Leaves& leaves, const SolidSpace& solids, doubl
         for (int a = 0; a < 3; ++a)
             boundary = boundary || box.min[a] <= graph.bounds.min[a] + tolerance ||
                        box.max[a] >= graph.bounds.max[a] - tolerance;
-        if (boundary && leaves.kind[leaf] != LeafKind::Solid)
+        if (boundary && joins[leaf])
             outside[findRoot(parent, leaf)] = true;
     }
     std::vector<std::uint32_t> at;
@@ -138,14 +154,14 @@ std::vector<bool> eyeSpace(const Leaves& leaves, const SolidSpace& solids, doubl
         at.clear();
         graph.locate(eye, tolerance, at);
         for (std::uint32_t leaf : at)
-            if (leaves.kind[leaf] != LeafKind::Solid)
+            if (joins[leaf])
                 seeded[findRoot(parent, leaf)] = true;
     }
     std::vector<bool> result(count, false);
     for (std::uint32_t leaf = 0; leaf < count; ++leaf)
     {
         const std::uint32_t root = findRoot(parent, leaf);
-        result[leaf] = leaves.kind[leaf] == LeafKind::Open && seeded[root] && !outside[root];
+        result[leaf] = leaves.kind[leaf] == LeafKind::Open && joins[leaf] && seeded[root] && !outside[root];
     }
     return result;
 }
