@@ -67,19 +67,29 @@ TEST(MaskBudget, NeverSpendsMoreThanItsBudgetAndOnlyHidesLess)
             EXPECT_LE(limited.stats.rasterWork, budget / 5 * 3) << "budget " << budget;
             EXPECT_LE(limited.stats.rasterWork + limited.stats.markWork, budget) << "budget " << budget;
             if (!(limited.visible == unlimited.visible))
+            {
                 EXPECT_TRUE(limited.stats.overBudget) << "hid less without saying so, budget " << budget;
+            }
             if (limited.stats.groupsSkipped != 0)
+            {
                 EXPECT_TRUE(limited.stats.overBudget);
+            }
             cutShort += limited.stats.overBudget;
             for (ObjectId id = 0; id < city.scene.objects.size(); ++id)
             {
                 if (seen.visible[id])
+                {
                     ASSERT_TRUE(limited.visible.test(id)) << "object " << id << " seen by the rays, budget " << budget;
+                }
                 if (unlimited.visible.test(id))
+                {
                     ASSERT_TRUE(limited.visible.test(id)) << "object " << id << " hidden only with a budget " << budget;
+                }
             }
             if (budget == needed * 2)
+            {
                 EXPECT_TRUE(limited.visible == unlimited.visible) << "a budget that suffices changes nothing";
+            }
             if (budget == 40)
                 hiddenSmall += city.scene.objects.size() - limited.visible.count();
             EXPECT_TRUE(firstFrame(city.scene, view, budget).visible == limited.visible) << "reproducible";
