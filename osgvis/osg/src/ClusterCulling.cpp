@@ -61,4 +61,27 @@ ClusterCull cullClusters(osgUtil::CullVisitor& cv, osg::Drawable& drawable, cons
         cv.popStateSet();
     return ClusterCull::Drawn;
 }
+
+bool culledByCallback(osg::NodeVisitor& nv, osg::Drawable& drawable, const osg::Callback* callback)
+{
+    if (!callback)
+        return false;
+    osgUtil::CullVisitor* cv = nv.asCullVisitor();
+    if (const osg::DrawableCullCallback* dcb = callback->asDrawableCullCallback())
+        return dcb->cull(&nv, &drawable, cv ? &cv->getRenderInfo() : nullptr);
+    const_cast<osg::Callback*>(callback)->run(&drawable, &nv);
+    return false;
+}
+
+bool drawClusteredWhole(osgUtil::CullVisitor& cv, osg::Drawable& drawable, const ClusterLayout& layout,
+                        core::ObjectId first, const core::VisibleSet& visible)
+{
+    std::size_t visibleClusters = 0;
+    visibleRuns(layout, first, visible, visibleClusters);
+    if (visibleClusters == layout.size())
+        return true; // drawn whole by OSG, callbacks and all
+    if (visibleClusters == 0 || culledByCallback(cv, drawable, drawable.getCullCallback()))
+        return false;
+    return cullClusters(cv, drawable, layout, first, visible) == ClusterCull::Whole;
+}
 } // namespace osgVis

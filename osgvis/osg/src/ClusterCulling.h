@@ -28,4 +28,14 @@ ClusterDraw::Runs visibleRuns(const ClusterLayout& layout, core::ObjectId first,
 /// and far, state set, depth). Never culls a visible cluster.
 ClusterCull cullClusters(osgUtil::CullVisitor& cv, osg::Drawable& drawable, const ClusterLayout& layout,
                          core::ObjectId first, const core::VisibleSet& visible);
+
+/// Runs `callback` (the drawable's own cull callback, or one it chains) as
+/// osgUtil::CullVisitor::apply(osg::Drawable&) does; true when it culls the drawable.
+bool culledByCallback(osg::NodeVisitor& nv, osg::Drawable& drawable, const osg::Callback* callback);
+
+/// The whole decision for a clustered instance, the drawable at the top of the visitor's path: true
+/// when OSG should draw the drawable whole (every cluster visible, or cullClusters says so); false when
+/// none is visible, its own cull callback culls it, or a ClusterDraw of the visible ones went in.
+bool drawClusteredWhole(osgUtil::CullVisitor& cv, osg::Drawable& drawable, const ClusterLayout& layout,
+                        core::ObjectId first, const core::VisibleSet& visible);
 } // namespace osgVis

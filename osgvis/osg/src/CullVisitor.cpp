@@ -4,6 +4,7 @@
 #include <osgVis/core/api/ModuleRegistry.h>
 
 #include "ClusterCulling.h"
+#include "TreeCull.h"
 
 #include <osg/Camera>
 #include <osg/PagedLOD>
@@ -12,6 +13,8 @@
 #include <osgUtil/SceneView>
 #include <osgViewer/Renderer>
 #include <osgViewer/View>
+
+#include <functional>
 
 namespace osgVis
 {
@@ -94,6 +97,7 @@ void CullVisitor::reset()
     osgUtil::CullVisitor::reset();
     _activeRoot = nullptr;
     _active = {};
+    _decided = false;
 }
 
 namespace
@@ -106,6 +110,16 @@ const osg::RefMatrix* bottomOf(const osg::CullStack::MatrixStack& stack)
         return nullptr;
     return stack._stack.empty() ? stack._value.get() : stack._stack.front().get();
 }
+
+class VisitorChildAcceptor : public ChildAcceptor
+{
+public:
+    explicit VisitorChildAcceptor(std::function<void(osg::Node&, bool)> accept) : _accept(std::move(accept)) {}
+    void accept(osg::Node& child, bool decided) override { _accept(child, decided); }
+
+private:
+    std::function<void(osg::Node&, bool)> _accept;
+};
 } // namespace
 
 void CullVisitor::activate(osg::Node& root)
@@ -121,10 +135,50 @@ void CullVisitor::activate(osg::Node& root)
     _active = _shared->cullerFor(root).cull(*this, root, *modelView, *projection);
 }
 
+void CullVisitor::acceptChild(osg::Node& child, bool decided)
+{
+    const bool outer = _decided;
+    _decided = outer || decided;
+    child.accept(*this);
+    _decided = outer;
+}
+
+bool CullVisitor::cullRootOverTree(osg::Group& root)
+{
+    const osg::NodePath& path = getNodePath();
+    if (path.size() != 1 || !enterableNode(root))
+        return false;
+    if (path.front() != _activeRoot)
+        activate(root);
+    if (!_active.visible || _active.everything || !_active.scene->cullTree)
+        return false;
+    VisitorChildAcceptor acceptor([this](osg::Node& child, bool decided) { acceptChild(child, decided); });
+    TreeCull(*this, *_active.scene, *_active.visible, acceptor).cullGroup(0, root);
+    return true;
+}
+
+void CullVisitor::apply(osg::Group& node)
+{
+    if (!cullRootOverTree(node))
+        osgUtil::CullVisitor::apply(node);
+}
+
+void CullVisitor::apply(osg::Geode& node)
+{
+    if (!cullRootOverTree(node))
+        osgUtil::CullVisitor::apply(node);
+}
+
+void CullVisitor::apply(osg::Transform& node)
+{
+    if (!cullRootOverTree(node))
+        osgUtil::CullVisitor::apply(node);
+}
+
 void CullVisitor::apply(osg::Drawable& drawable)
 {
     const osg::NodePath& path = getNodePath();
-    if (!path.empty())
+    if (!_decided && !path.empty())
     {
         if (path.front() != _activeRoot)
             activate(*path.front());
@@ -133,7 +187,7 @@ void CullVisitor::apply(osg::Drawable& drawable)
             const core::ObjectId id = _active.scene->find(&drawable, path);
             if (id != core::InvalidObject && _active.scene->refs[id].clusters)
             {
-                if (!clustersVisible(drawable, *_active.scene->refs[id].clusters, id))
+                if (!drawClusteredWhole(*this, drawable, *_active.scene->refs[id].clusters, id, *_active.visible))
                     return;
             }
             else if (id != core::InvalidObject && !_active.visible->test(id))
@@ -146,7 +200,7 @@ void CullVisitor::apply(osg::Drawable& drawable)
 bool CullVisitor::pagedNodeHidden(osg::Group& node)
 {
     const osg::NodePath& path = getNodePath();
-    if (path.empty())
+    if (_decided || path.empty())
         return false;
     if (path.front() != _activeRoot)
         activate(*path.front());
@@ -166,28 +220,6 @@ void CullVisitor::apply(osg::ProxyNode& node)
 {
     if (!pagedNodeHidden(node))
         osgUtil::CullVisitor::apply(node);
-}
-
-bool CullVisitor::clustersVisible(osg::Drawable& drawable, const ClusterLayout& layout, core::ObjectId first)
-{
-    std::size_t visibleClusters = 0;
-    visibleRuns(layout, first, *_active.visible, visibleClusters);
-    if (visibleClusters == layout.size())
-        return true; // drawn whole by OSG, callbacks and all
-    if (visibleClusters == 0)
-        return false;
-    // A drawable's own cull callback still decides first, as osgUtil::CullVisitor::apply lets it.
-    if (osg::Callback* callback = drawable.getCullCallback())
-    {
-        if (const osg::DrawableCullCallback* dcb = callback->asDrawableCullCallback())
-        {
-            if (dcb->cull(this, &drawable, &getRenderInfo()))
-                return false;
-        }
-        else
-            callback->run(&drawable, this);
-    }
-    return cullClusters(*this, drawable, layout, first, *_active.visible) == ClusterCull::Whole;
 }
 
 void CullVisitor::installAsPrototype(const std::string& modes)

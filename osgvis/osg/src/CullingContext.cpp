@@ -72,21 +72,11 @@ bool placeholderHiddenByActiveContext(osg::NodeVisitor& visitor, const osg::Node
     return false;
 }
 
-bool VisibilityCullCallback::cull(osg::NodeVisitor* nv, osg::Drawable* drawable, osg::RenderInfo* renderInfo) const
+bool VisibilityCullCallback::cull(osg::NodeVisitor* nv, osg::Drawable* drawable, osg::RenderInfo*) const
 {
-    if (_chained)
-    {
-        // Mirrors osgUtil::CullVisitor::apply(osg::Drawable&) for the callback we replaced.
-        if (const osg::DrawableCullCallback* dcb = _chained->asDrawableCullCallback())
-        {
-            if (dcb->cull(nv, drawable, renderInfo))
-                return true;
-        }
-        else
-        {
-            _chained->run(drawable, nv);
-        }
-    }
+    // Mirrors osgUtil::CullVisitor::apply(osg::Drawable&) for the callback we replaced.
+    if (nv && drawable && culledByCallback(*nv, *drawable, _chained.get()))
+        return true;
     return nv && drawable && hiddenByActiveContext(*nv, *drawable);
 }
 

@@ -16,6 +16,8 @@ void extractBelow(ExtractedScene& out, const osg::NodePath& prefix, osg::Node& c
 // Node types whose cull traversal draws exactly their drawables, nothing else, entering every child
 // whose mask is valid (see ChildRange::closed).
 bool plainNodeType(const osg::Node& node);
+// A drawable without cull callback, or with only osgVis's own that chains none.
+bool plainCullCallback(const osg::Drawable& drawable);
 
 // Paged nodes (PagedLOD, ProxyNode): whether the node states its bound (a user centre and radius),
 // whether that bound covers the children still to load, and the file of a child.

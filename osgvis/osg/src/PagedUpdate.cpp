@@ -19,6 +19,9 @@ osg::ref_ptr<ExtractedScene> copyOf(const ExtractedScene& previous)
     out->scene = previous.scene;
     out->refs = previous.refs;
     out->childRanges = previous.childRanges;
+    // note: the tree ends at paged nodes, so their new tiles change none of its nodes but the ids
+    // of those above, which hold a paged node and so are never closed: stale, they only keep more
+    out->cullTree = previous.cullTree;
     out->pagedNodes = previous.pagedNodes;
     out->oversizedTiles = previous.oversizedTiles;
     out->clusteredDrawables = previous.clusteredDrawables;

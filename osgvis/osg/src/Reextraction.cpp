@@ -2,6 +2,7 @@
 // reextractScene: a fresh extraction renumbered onto the ids of the previous one.
 #include <osgVis/SceneExtractor>
 
+#include "CullTree.h"
 #include "Extraction.h"
 
 #include <algorithm>
@@ -163,6 +164,7 @@ osg::ref_ptr<ExtractedScene> reextractScene(osg::Node& root, const ExtractedScen
     addChange(out->changes, core::SceneChange::Kind::Inserted, std::move(inserted));
     out->replaces = &previous;
     assignTileKeys(*out);
+    out->cullTree = buildCullTree(*out, root);
     return out;
 }
 } // namespace osgVis

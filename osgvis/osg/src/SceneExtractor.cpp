@@ -7,6 +7,7 @@
 #include <osgVis/VisibilityGroup>
 
 #include "CullingContext.h"
+#include "CullTree.h"
 #include "Extraction.h"
 #include "OccluderEligibility.h"
 
@@ -81,6 +82,15 @@ bool plainNodeType(const osg::Node& node)
     return t == typeid(osg::Group) || t == typeid(osg::Geode) || t == typeid(osg::MatrixTransform) ||
            t == typeid(osg::PositionAttitudeTransform) || t == typeid(Occluder) || t == typeid(Cell) ||
            t == typeid(Portal);
+}
+
+bool plainCullCallback(const osg::Drawable& drawable)
+{
+    const osg::Callback* cb = drawable.getCullCallback();
+    if (!cb)
+        return true;
+    const auto* own = dynamic_cast<const VisibilityCullCallback*>(cb);
+    return own && !own->getChained();
 }
 
 namespace
@@ -274,15 +284,6 @@ bool transparentState(const osg::StateSet* ss)
 bool isOsgVisGroup(const osg::Node& node)
 {
     return dynamic_cast<const VisibilityGroup*>(&node) != nullptr;
-}
-
-bool plainCullCallback(const osg::Drawable& drawable)
-{
-    const osg::Callback* cb = drawable.getCullCallback();
-    if (!cb)
-        return true;
-    const auto* own = dynamic_cast<const VisibilityCullCallback*>(cb);
-    return own && !own->getChained();
 }
 
 } // namespace
@@ -800,6 +801,7 @@ osg::ref_ptr<ExtractedScene> extractSceneQuietly(osg::Node& root, const Extracti
     osg::ref_ptr<ExtractedScene> out = new ExtractedScene;
     Extractor(*out, options).run(root);
     assignTileKeys(*out);
+    out->cullTree = buildCullTree(*out, root);
     return out;
 }
 

@@ -26,6 +26,7 @@ struct ViewCuller::PerView
     osg::ref_ptr<const osg::Referenced> key; // held so the address is never reused by another view
     core::ModuleChain chain;
     osg::ref_ptr<const ExtractedScene> scene; // the one `chain` was built for
+    std::size_t objects = 0;                  // of `scene`, live and not placeholders
     core::VisibleSet visible;
     core::DebugRecord* debugRecord = nullptr; // the one `chain`'s stages were given
     // Asynchronous visibility, when on and the chain answers regions; destroyed (its worker
@@ -70,6 +71,30 @@ const core::VisibleSet* regionSeenAhead(core::ModuleChain& chain, const core::As
     out.reset(objects, true);
     chain.cullRegion(region, out);
     return out.count() == out.capacity() ? nullptr : &out;
+}
+
+// Objects and paged nodes known, and of them those `visible` holds: work grows with the visible ones.
+void countVisible(const ExtractedScene& scene, std::size_t objects, const core::VisibleSet& visible,
+                  CullStatistics& figures)
+{
+    figures.objects = static_cast<unsigned>(objects);
+    figures.pagedNodes = static_cast<unsigned>(scene.pagedNodes.size());
+    unsigned pagedVisible = 0;
+    visible.forEach([&](core::ObjectId id) {
+        if (id >= scene.refs.size() || scene.removed(id))
+            return;
+        if (scene.placeholder(id))
+        {
+            ++pagedVisible;
+            return;
+        }
+        const core::SceneObject& object = scene.scene.objects[id];
+        ++figures.visible;
+        figures.trianglesVisible += object.triangleCount;
+        if (object.group != core::InvalidObject)
+            ++figures.clustersVisible;
+    });
+    figures.pagedNodesSkipped = figures.pagedNodes - pagedVisible; // deferred ones included
 }
 
 // The core scene of an extraction, kept alive (with the extraction) for as long as the pointer.
@@ -280,6 +305,9 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         else if (view->async)
             view->async->setScene(sharedScene(scene));
         view->scene = scene;
+        view->objects = 0;
+        for (core::ObjectId id = 0; id < scene->refs.size(); ++id)
+            view->objects += !scene->removed(id) && !scene->placeholder(id);
     }
     const osg::Viewport* viewport = cv.getViewport();
     const osg::FrameStamp* frameStamp = cv.getFrameStamp();
@@ -337,25 +365,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     if (debugLock.owns_lock())
         debugLock.unlock();
 
-    for (const core::SceneObject& object : scene->scene.objects)
-    {
-        if (scene->removed(object.id))
-            continue;
-        if (scene->placeholder(object.id))
-        {
-            ++figures.pagedNodes;
-            figures.pagedNodesSkipped += view->visible.test(object.id) ? 0 : 1; // deferred ones included
-            continue;
-        }
-        ++figures.objects;
-        if (view->visible.test(object.id))
-        {
-            ++figures.visible;
-            figures.trianglesVisible += object.triangleCount;
-            if (object.group != core::InvalidObject)
-                ++figures.clustersVisible;
-        }
-    }
+    countVisible(*scene, view->objects, view->visible, figures);
     figures.clustered = scene->clusteredDrawables != 0;
     figures.cullMs = std::chrono::duration<double, std::milli>(end - start).count();
     if (frameStamp)

@@ -3,10 +3,9 @@
 
 #include "CullingContext.h"
 #include "PagedNodeCulling.h"
+#include "TreeCull.h"
 
 #include <osgUtil/CullVisitor>
-
-#include <algorithm>
 
 namespace osgVis
 {
@@ -56,6 +55,29 @@ bool VisibilityGroup::setChild(unsigned i, osg::Node* node)
     return osg::Group::setChild(i, node);
 }
 
+namespace
+{
+// A drawable the tree walk cannot reach itself: below a node it does not enter (Switch, LOD, paged
+// node, nested VisibilityGroup, a node with a cull callback), between the root and the drawable.
+bool belowUnenterableNode(const osg::NodePath& path)
+{
+    for (std::size_t depth = 1; depth + 1 < path.size(); ++depth)
+        if (!enterableNode(*path[depth]))
+            return true;
+    return false;
+}
+
+class GroupChildAcceptor : public ChildAcceptor
+{
+public:
+    explicit GroupChildAcceptor(osg::NodeVisitor& nv) : _nv(nv) {}
+    void accept(osg::Node& child, bool) override { child.accept(_nv); }
+
+private:
+    osg::NodeVisitor& _nv;
+};
+} // namespace
+
 void VisibilityGroup::installCullCallbacks(const ExtractedScene& scene)
 {
     std::lock_guard<std::mutex> lock(_installMutex);
@@ -64,28 +86,12 @@ void VisibilityGroup::installCullCallbacks(const ExtractedScene& scene)
     // note: drawables of an earlier extraction keep their callback; it finds them in no active
     // context's scene any more and hides nothing.
     for (const ObjectRef& ref : scene.refs)
-        if (ref.drawable)
+        if (ref.drawable && belowUnenterableNode(ref.path))
             VisibilityCullCallback::installOn(*ref.drawable);
         else if (ref.paged)
             PagedNodeCullCallback::installOn(*ref.paged);
     _callbacksInstalledFor = &scene;
 }
-
-namespace
-{
-// False only for a child with objects, none of them visible.
-bool anyVisible(const ChildRange& range, const core::VisibleSet& visible)
-{
-    if (!range.ids.empty())
-        return std::any_of(range.ids.begin(), range.ids.end(), [&](core::ObjectId id) { return visible.test(id); });
-    if (range.first >= range.end)
-        return true;
-    for (core::ObjectId id = range.first; id < range.end; ++id)
-        if (visible.test(id))
-            return true;
-    return false;
-}
-} // namespace
 
 void VisibilityGroup::traverse(osg::NodeVisitor& nv)
 {
@@ -99,17 +105,16 @@ void VisibilityGroup::traverse(osg::NodeVisitor& nv)
     // The modelview at this group maps its local frame, the frame of the extracted bounds, to eye space.
     const ViewCuller::Result result =
         _culler->cull(*cv, *this, *cv->getModelViewMatrix(), *cv->getProjectionMatrix());
-    installCullCallbacks(*result.scene);
-
-    const osg::NodePath& path = cv->getNodePath();
-    const ScopedCullingContext context({cv, result.scene.get(), result.visible, path.size() - 1, result.everything});
-    const std::vector<ChildRange>& ranges = result.scene->childRanges;
-    const bool rangesMatch = !result.everything && ranges.size() == _children.size();
-    for (unsigned i = 0; i < _children.size(); ++i)
+    if (result.everything)
     {
-        if (rangesMatch && ranges[i].closed && !anyVisible(ranges[i], *result.visible))
-            continue; // a closed child draws nothing but its objects
-        _children[i]->accept(nv);
+        osg::Group::traverse(nv);
+        return;
     }
+    installCullCallbacks(*result.scene);
+    // The context serves only the callbacks below nodes the walk does not enter.
+    const ScopedCullingContext context(
+        {cv, result.scene.get(), result.visible, cv->getNodePath().size() - 1, result.everything});
+    GroupChildAcceptor acceptor(nv);
+    TreeCull(*cv, *result.scene, *result.visible, acceptor).cullChildren(0, *this);
 }
 } // namespace osgVis

@@ -23,6 +23,25 @@ std::size_t VisibleSet::count() const
     return n;
 }
 
+std::size_t VisibleSet::countRange(ObjectId first, ObjectId end) const
+{
+    end = static_cast<ObjectId>(std::min<std::size_t>(end, _size));
+    if (first >= end)
+        return 0;
+    const std::size_t lastWord = (end - 1) >> 6;
+    std::size_t n = 0;
+    for (std::size_t w = first >> 6; w <= lastWord; ++w)
+    {
+        std::uint64_t bits = _words[w];
+        if (w == (first >> 6))
+            bits &= ~std::uint64_t(0) << (first & 63);
+        if (w == lastWord && (end & 63))
+            bits &= (std::uint64_t(1) << (end & 63)) - 1;
+        n += static_cast<std::size_t>(__builtin_popcountll(bits));
+    }
+    return n;
+}
+
 void VisibleSet::intersectWith(const VisibleSet& other)
 {
     const std::size_t shared = std::min(_words.size(), other._words.size());
@@ -35,16 +54,7 @@ std::vector<ObjectId> VisibleSet::ids() const
 {
     std::vector<ObjectId> result;
     result.reserve(count());
-    for (std::size_t w = 0; w < _words.size(); ++w)
-    {
-        std::uint64_t bits = _words[w];
-        while (bits)
-        {
-            const int bit = __builtin_ctzll(bits);
-            result.push_back(static_cast<ObjectId>(w * 64 + bit));
-            bits &= bits - 1;
-        }
-    }
+    forEach([&](ObjectId id) { result.push_back(id); });
     return result;
 }
 } // namespace osgVis::core

@@ -22,6 +22,16 @@ public:
     void set(ObjectId id) { _words[id >> 6] |= (std::uint64_t(1) << (id & 63)); }
     void clear(ObjectId id) { _words[id >> 6] &= ~(std::uint64_t(1) << (id & 63)); }
     std::size_t count() const;
+    /// How many of the ids [first, end) are in the set (ids past capacity() count as absent).
+    std::size_t countRange(ObjectId first, ObjectId end) const;
+    /// Calls f(id) for each id in the set, in ascending order: work grows with the words and the ids set.
+    template <class F>
+    void forEach(F&& f) const
+    {
+        for (std::size_t w = 0; w < _words.size(); ++w)
+            for (std::uint64_t bits = _words[w]; bits; bits &= bits - 1)
+                f(static_cast<ObjectId>(w * 64 + static_cast<std::size_t>(__builtin_ctzll(bits))));
+    }
     /// this ∩= other
     void intersectWith(const VisibleSet& other);
     /// Ids in ascending order.
