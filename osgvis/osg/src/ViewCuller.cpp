@@ -204,6 +204,147 @@ std::shared_ptr<ViewCuller::PerView> ViewCuller::viewFor(const osg::Referenced* 
     return view;
 }
 
+// The extraction this cull uses, brought up to date with what changed since the last one (under _mutex).
+osg::ref_ptr<const ExtractedScene> ViewCuller::currentScene(osgUtil::CullVisitor& cv, osg::Node& root, bool& extracted)
+{
+    const bool extract = !_scene || _root.get() != &root;
+    const unsigned frame = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : ~0u;
+    // note: the application changes the graph in update, before every view's cull, so one
+    // comparison a frame suffices; without frame stamps every cull compares
+    osg::ref_ptr<ExtractedScene> moved; // only matrices changed: the objects below them placed again
+    if (!extract && !_dirty && (frame == ~0u || frame != _watchedFrame))
+    {
+        const SceneWatch::Difference& difference = _watch->compare();
+        if (!difference.other && !difference.moved.empty())
+            moved = moveObjects(*_scene, difference.moved, _extractionOptions);
+        if (moved)
+            _watch->acceptMatrices(difference);
+        else
+            _dirty = difference.any();
+    }
+    _watchedFrame = frame;
+    // note: a paged node whose child count changed was merged into or expired by the pager; only
+    // its children are extracted again, unless the whole root is dirty anyway
+    const bool paged = !extract && !_dirty && !moved && _scene->pagedNodesChanged();
+    const bool reextract = !extract && (_dirty || paged);
+    osg::ref_ptr<ExtractedScene> updated = paged ? updatePagedScene(*_scene, _extractionOptions) : nullptr;
+    if (extract)
+        _scene = extractScene(root, _extractionOptions);
+    else if (moved)
+        _scene = moved;
+    else if (updated)
+        _scene = updated;
+    else if (reextract)
+        _scene = reextractScene(root, *_scene, _extractionOptions);
+    extracted = extract || reextract;
+    if (extracted)
+        _watch->record(root);
+    _root = &root;
+    _dirty = false;
+    return _scene;
+}
+
+namespace
+{
+// Lets stock tools (osgviewer with OSG_NOTIFY_LEVEL=INFO) show that osgVis culls their scene.
+void reportExtraction(const osg::Node& root, const ExtractedScene& scene, const std::string& modes)
+{
+    if (!osg::isNotifyEnabled(osg::INFO))
+        return;
+    std::size_t objects = 0, triangles = 0;
+    for (const core::SceneObject& object : scene.scene.objects)
+        if (!scene.removed(object.id) && !scene.placeholder(object.id))
+        {
+            ++objects;
+            triangles += object.triangleCount;
+        }
+    OSG_INFO << "osgVis: " << root.getName() << ": extracted " << objects << " objects (" << triangles
+             << " triangles), modes " << modes << std::endl;
+}
+} // namespace
+
+// Hands the view's chain (and worker) the extraction, as a replacement where it can.
+void ViewCuller::handOver(PerView& view, const osg::ref_ptr<const ExtractedScene>& scene)
+{
+    if (view.scene == scene)
+        return;
+    // note: view.scene holds the extraction it names, so a match with `replaces` (which is only
+    // ever the extraction right before `scene`) cannot be an address reused by another one.
+    const bool replaced = view.scene && scene->replaces == view.scene.get();
+    if (replaced)
+        view.chain.sceneReplaced(scene->scene, scene->changes);
+    else
+    {
+        view.chain.setScene(scene->scene);
+        view.placeholderLastVisible.clear(); // new ids
+    }
+    if (view.async && replaced)
+        view.async->sceneReplaced(sharedScene(scene), scene->changes);
+    else if (view.async)
+        view.async->setScene(sharedScene(scene));
+    view.scene = scene;
+    view.objects = 0;
+    for (core::ObjectId id = 0; id < scene->refs.size(); ++id)
+        view.objects += !scene->removed(id) && !scene->placeholder(id);
+}
+
+// The visible set: every object on a backed-off frame, else the worker's region answer, else the chain.
+void ViewCuller::decide(PerView& view, const core::View& coreView, bool recording,
+                        std::chrono::steady_clock::time_point start, CullStatistics& figures)
+{
+    figures.async = view.async != nullptr;
+    // Do no harm, on synchronous views that record nothing: the interval since this view's last cull
+    // is the previous frame's time, with or without the chain.
+    figures.backOff = !view.async && !recording && view.backOff.enabled();
+    const bool useChain =
+        !figures.backOff || view.backOff.useChain(std::chrono::duration<double>(start - view.previousCull).count());
+    view.previousCull = start;
+    if (!useChain)
+    {
+        figures.backedOff = true;
+        view.visible.reset(view.scene->scene.objects.size(), true);
+    }
+    // A debug record describes the chain's own decisions: recording views cull synchronously.
+    else if (!view.async || recording || !view.async->cull(coreView, view.visible))
+    {
+        figures.asyncFallback = figures.async;
+        view.chain.cull(coreView, view.visible);
+    }
+}
+
+// After the cull: what the pager is asked for, kept fresh and fetched ahead (docs/paging.md).
+void ViewCuller::drivePaging(PerView& view, osgUtil::CullVisitor& cv, const PagingOptions& paging,
+                             const core::View& coreView, const osg::Matrixd& modelView,
+                             const osg::Matrixd& projection, CullStatistics& figures)
+{
+    const ExtractedScene& scene = *view.scene;
+    const osg::FrameStamp* frameStamp = cv.getFrameStamp();
+    const auto* pager = dynamic_cast<const osgDB::DatabasePager*>(cv.getDatabaseRequestHandler());
+    const std::size_t residentBudget =
+        pager ? pager->getTargetMaximumNumberOfPageLOD() : std::numeric_limits<std::size_t>::max();
+    const PagingFigures pagingFigures = applyPagingPolicy(paging, scene, view.visible, modelView, projection,
+                                                          frameStamp, residentBudget, view.placeholderLastVisible);
+    figures.pagedNodesDeferred = pagingFigures.deferred;
+    figures.pagedNodesKeptFresh = pagingFigures.keptFresh;
+    // The eye's last step, per frame, extrapolated for the prefetch.
+    const osg::Vec3d eye = osg::Matrixd::inverse(modelView).getTrans();
+    const unsigned frame = frameStamp ? frameStamp->getFrameNumber() : 0u;
+    if (osg::NodeVisitor::DatabaseRequestHandler* handler = cv.getDatabaseRequestHandler();
+        handler && view.previousFrame != ~0u && frame > view.previousFrame && !scene.pagedNodes.empty())
+    {
+        const osg::Vec3d step = (eye - view.previousEye) / double(frame - view.previousFrame);
+        const core::VisibleSet* seenAhead =
+            paging.prefetchFrames != 0
+                ? regionSeenAhead(view.chain, view.async.get(), coreView, eye, step * double(paging.prefetchFrames),
+                                  view.visible.capacity(), view.seenAhead)
+                : nullptr;
+        figures.pagedNodesPrefetched =
+            prefetchAhead(scene, view.visible, eye, step, paging.prefetchFrames, seenAhead, *handler, frameStamp);
+    }
+    view.previousEye = eye;
+    view.previousFrame = frame;
+}
+
 ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, const osg::Matrixd& modelView,
                                     const osg::Matrixd& projection)
 {
@@ -221,58 +362,13 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     {
         std::lock_guard<std::mutex> lock(_mutex);
         paging = _pagingOptions;
-        const bool extract = !_scene || _root.get() != &root;
-        const unsigned frame = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : ~0u;
-        // note: the application changes the graph in update, before every view's cull, so one
-        // comparison a frame suffices; without frame stamps every cull compares
-        osg::ref_ptr<ExtractedScene> moved; // only matrices changed: the objects below them placed again
-        if (!extract && !_dirty && (frame == ~0u || frame != _watchedFrame))
-        {
-            const SceneWatch::Difference& difference = _watch->compare();
-            if (!difference.other && !difference.moved.empty())
-                moved = moveObjects(*_scene, difference.moved, _extractionOptions);
-            if (moved)
-                _watch->acceptMatrices(difference);
-            else
-                _dirty = difference.any();
-        }
-        _watchedFrame = frame;
-        // note: a paged node whose child count changed was merged into or expired by the pager; only
-        // its children are extracted again, unless the whole root is dirty anyway
-        const bool paged = !extract && !_dirty && !moved && _scene->pagedNodesChanged();
-        const bool reextract = !extract && (_dirty || paged);
-        osg::ref_ptr<ExtractedScene> updated = paged ? updatePagedScene(*_scene, _extractionOptions) : nullptr;
-        if (extract)
-            _scene = extractScene(root, _extractionOptions);
-        else if (moved)
-            _scene = moved;
-        else if (updated)
-            _scene = updated;
-        else if (reextract)
-            _scene = reextractScene(root, *_scene, _extractionOptions);
-        extracted = extract || reextract;
-        if (extracted)
-            _watch->record(root);
+        scene = currentScene(cv, root, extracted);
         if (extracted)
             modes = _modes;
-        _root = &root;
-        _dirty = false;
-        scene = _scene;
         view = viewFor(key);
     }
-    // Lets stock tools (osgviewer with OSG_NOTIFY_LEVEL=INFO) show that osgVis culls their scene.
-    if (extracted && osg::isNotifyEnabled(osg::INFO))
-    {
-        std::size_t objects = 0, triangles = 0;
-        for (const core::SceneObject& object : scene->scene.objects)
-            if (!scene->removed(object.id) && !scene->placeholder(object.id))
-            {
-                ++objects;
-                triangles += object.triangleCount;
-            }
-        OSG_INFO << "osgVis: " << root.getName() << ": extracted " << objects << " objects (" << triangles
-                 << " triangles), modes " << modes << std::endl;
-    }
+    if (extracted)
+        reportExtraction(root, *scene, modes);
 
     std::unique_lock<std::mutex> debugLock(_debugMutex);
     core::DebugRecord* const record = _debugRecord;
@@ -288,27 +384,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
     }
 
     const auto start = std::chrono::steady_clock::now();
-    if (view->scene != scene)
-    {
-        // note: view->scene holds the extraction it names, so a match with `replaces` (which is only
-        // ever the extraction right before `scene`) cannot be an address reused by another one.
-        const bool replaced = view->scene && scene->replaces == view->scene.get();
-        if (replaced)
-            view->chain.sceneReplaced(scene->scene, scene->changes);
-        else
-        {
-            view->chain.setScene(scene->scene);
-            view->placeholderLastVisible.clear(); // new ids
-        }
-        if (view->async && replaced)
-            view->async->sceneReplaced(sharedScene(scene), scene->changes);
-        else if (view->async)
-            view->async->setScene(sharedScene(scene));
-        view->scene = scene;
-        view->objects = 0;
-        for (core::ObjectId id = 0; id < scene->refs.size(); ++id)
-            view->objects += !scene->removed(id) && !scene->placeholder(id);
-    }
+    handOver(*view, scene);
     const osg::Viewport* viewport = cv.getViewport();
     const osg::FrameStamp* frameStamp = cv.getFrameStamp();
     const core::View coreView =
@@ -316,51 +392,9 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
                        viewport ? static_cast<std::uint32_t>(viewport->width()) : 1280u,
                        viewport ? static_cast<std::uint32_t>(viewport->height()) : 1024u);
     CullStatistics figures;
-    figures.async = view->async != nullptr;
-    // Do no harm, on synchronous views that record nothing: the interval since this view's last cull
-    // is the previous frame's time, with or without the chain.
-    figures.backOff = !view->async && !record && view->backOff.enabled();
-    const bool useChain =
-        !figures.backOff || view->backOff.useChain(std::chrono::duration<double>(start - view->previousCull).count());
-    view->previousCull = start;
-    if (!useChain)
-    {
-        figures.backedOff = true;
-        view->visible.reset(scene->scene.objects.size(), true);
-    }
-    // A debug record describes the chain's own decisions: recording views cull synchronously.
-    else if (!view->async || record || !view->async->cull(coreView, view->visible))
-    {
-        figures.asyncFallback = figures.async;
-        view->chain.cull(coreView, view->visible);
-    }
+    decide(*view, coreView, record != nullptr, start, figures);
     if (!figures.backedOff)
-    {
-        const auto* pager = dynamic_cast<const osgDB::DatabasePager*>(cv.getDatabaseRequestHandler());
-        const std::size_t residentBudget =
-            pager ? pager->getTargetMaximumNumberOfPageLOD() : std::numeric_limits<std::size_t>::max();
-        const PagingFigures pagingFigures = applyPagingPolicy(paging, *scene, view->visible, modelView, projection,
-                                                              frameStamp, residentBudget, view->placeholderLastVisible);
-        figures.pagedNodesDeferred = pagingFigures.deferred;
-        figures.pagedNodesKeptFresh = pagingFigures.keptFresh;
-        // The eye's last step, per frame, extrapolated for the prefetch.
-        const osg::Vec3d eye = osg::Matrixd::inverse(modelView).getTrans();
-        const unsigned frame = frameStamp ? frameStamp->getFrameNumber() : 0u;
-        if (osg::NodeVisitor::DatabaseRequestHandler* handler = cv.getDatabaseRequestHandler();
-            handler && view->previousFrame != ~0u && frame > view->previousFrame && !scene->pagedNodes.empty())
-        {
-            const osg::Vec3d step = (eye - view->previousEye) / double(frame - view->previousFrame);
-            const core::VisibleSet* seenAhead =
-                paging.prefetchFrames != 0
-                    ? regionSeenAhead(view->chain, view->async.get(), coreView, eye,
-                                      step * double(paging.prefetchFrames), view->visible.capacity(), view->seenAhead)
-                    : nullptr;
-            figures.pagedNodesPrefetched =
-                prefetchAhead(*scene, view->visible, eye, step, paging.prefetchFrames, seenAhead, *handler, frameStamp);
-        }
-        view->previousEye = eye;
-        view->previousFrame = frame;
-    }
+        drivePaging(*view, cv, paging, coreView, modelView, projection, figures);
     const auto end = std::chrono::steady_clock::now();
     if (debugLock.owns_lock())
         debugLock.unlock();
