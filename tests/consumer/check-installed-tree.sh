@@ -29,17 +29,9 @@ out=$("$work/cmake-build/osgvis_consumer")
 echo "$out"
 grep -q "consumer ok" <<<"$out"
 
-echo "== a consumer of the old flat header paths (forwarding headers, one release)"
-out=$("$work/cmake-build/osgvis_old_paths_consumer")
-echo "$out"
-grep -q "old paths ok" <<<"$out"
-for moved in Walk.h:scene/Walk.h ModuleRegistry.h:api/ModuleRegistry.h OctreeModule.h:octree/OctreeModule.h \
-             PvsFormat.h:pvs/PvsFormat.h; do
-    text="#pragma message: <osgVis/core/${moved%%:*}> moved to <osgVis/core/${moved#*:}>"
-    count=$(grep -c -F "$text" "$work/build.log" || true)
-    [ "$count" -eq 1 ] || { echo "expected the warning '$text' once in the build, found $count:" >&2; cat "$work/build.log" >&2; exit 1; }
-done
-echo "moved-header warnings: once each"
+echo "== no flat core header paths (the forwarding headers of osgVis 0.1 are gone)"
+flat=$(find "$prefix/include/osgVis/core" -maxdepth 1 -name '*.h')
+[ -z "$flat" ] || { echo "headers left directly under include/osgVis/core: $flat" >&2; exit 1; }
 
 [ -x "$work/cmake-build/readme_example" ] || { echo "the README example did not build" >&2; exit 1; }
 
