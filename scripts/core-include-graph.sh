@@ -24,7 +24,7 @@ cxx=${CXX:-c++}
 # The C header osgVis/visapi.h belongs to capi/ (its accessors); plugin/ (modules behind the C
 # callbacks) is a method; visapi/ (the renderer side of the C interface) sits on the registry.
 layers='geometry:0 scene:1 spatial:2 occluders:2 pvs:3 module:3 capi:3
-frustum:4 octree:4 cellportal:4 mask:4 multifocal:4 cdt:4 plugin:4 api:5 async:6 visapi:6'
+frustum:4 octree:4 cellportal:4 mask:4 multifocal:4 cdt:4 plugin:4 api:5 async:6 session:7 visapi:8'
 
 # Folder of a path under the core ("-" for the forwarding headers at the old flat paths).
 folder_of() {

@@ -23,23 +23,16 @@ namespace osgVis
 {
 struct ViewCuller::PerView
 {
+    explicit PerView(const core::SessionOptions& options) : session(options) {}
+
     osg::ref_ptr<const osg::Referenced> key; // held so the address is never reused by another view
-    core::ModuleChain chain;
-    osg::ref_ptr<const ExtractedScene> scene; // the one `chain` was built for
+    core::CullSession session;
+    osg::ref_ptr<const ExtractedScene> scene; // the one `session` holds
     std::size_t objects = 0;                  // of `scene`, live and not placeholders
-    core::VisibleSet visible;
-    core::DebugRecord* debugRecord = nullptr; // the one `chain`'s stages were given
-    // Asynchronous visibility, when on and the chain answers regions; destroyed (its worker
-    // joined) before `scene`, which its worker may still use.
-    std::unique_ptr<core::AsyncVisibility> async;
-    core::BackOff backOff;
-    std::chrono::steady_clock::time_point previousCull{}; // when this view last culled
-    std::vector<unsigned> placeholderLastVisible;         // per object id: the frame this view last saw a paged node
-    osg::Vec3d previousEye;                               // in the root's frame, at previousFrame
+    std::vector<unsigned> placeholderLastVisible; // per object id: the frame this view last saw a paged node
+    osg::Vec3d previousEye;                       // in the root's frame, at previousFrame
     unsigned previousFrame = ~0u;
     core::VisibleSet seenAhead; // the prefetch's region answer (regionSeenAhead)
-
-    ~PerView() { async.reset(); }
 };
 
 namespace
@@ -194,12 +187,13 @@ std::shared_ptr<ViewCuller::PerView> ViewCuller::viewFor(const osg::Referenced* 
     std::shared_ptr<PerView>& view = _views[key];
     if (!view)
     {
-        view = std::make_shared<PerView>();
+        core::SessionOptions options;
+        options.modes = _modes;
+        options.async = _async;
+        options.asyncOptions = _asyncOptions;
+        options.backOff = _backOffOptions;
+        view = std::make_shared<PerView>(options);
         view->key = key;
-        view->chain = core::createChain(_modes);
-        if (_async && view->chain.supportsRegions())
-            view->async = std::make_unique<core::AsyncVisibility>(_modes, _asyncOptions);
-        view->backOff = core::BackOff(_backOffOptions);
     }
     return view;
 }
@@ -263,53 +257,24 @@ void reportExtraction(const osg::Node& root, const ExtractedScene& scene, const 
 }
 } // namespace
 
-// Hands the view's chain (and worker) the extraction, as a replacement where it can.
+// Hands the view's session the extraction, as a replacement where it can.
 void ViewCuller::handOver(PerView& view, const osg::ref_ptr<const ExtractedScene>& scene)
 {
     if (view.scene == scene)
         return;
     // note: view.scene holds the extraction it names, so a match with `replaces` (which is only
     // ever the extraction right before `scene`) cannot be an address reused by another one.
-    const bool replaced = view.scene && scene->replaces == view.scene.get();
-    if (replaced)
-        view.chain.sceneReplaced(scene->scene, scene->changes);
+    if (view.scene && scene->replaces == view.scene.get())
+        view.session.sceneReplaced(sharedScene(scene), scene->changes);
     else
     {
-        view.chain.setScene(scene->scene);
+        view.session.setScene(sharedScene(scene));
         view.placeholderLastVisible.clear(); // new ids
     }
-    if (view.async && replaced)
-        view.async->sceneReplaced(sharedScene(scene), scene->changes);
-    else if (view.async)
-        view.async->setScene(sharedScene(scene));
     view.scene = scene;
     view.objects = 0;
     for (core::ObjectId id = 0; id < scene->refs.size(); ++id)
         view.objects += !scene->removed(id) && !scene->placeholder(id);
-}
-
-// The visible set: every object on a backed-off frame, else the worker's region answer, else the chain.
-void ViewCuller::decide(PerView& view, const core::View& coreView, bool recording,
-                        std::chrono::steady_clock::time_point start, CullStatistics& figures)
-{
-    figures.async = view.async != nullptr;
-    // Do no harm, on synchronous views that record nothing: the interval since this view's last cull
-    // is the previous frame's time, with or without the chain.
-    figures.backOff = !view.async && !recording && view.backOff.enabled();
-    const bool useChain =
-        !figures.backOff || view.backOff.useChain(std::chrono::duration<double>(start - view.previousCull).count());
-    view.previousCull = start;
-    if (!useChain)
-    {
-        figures.backedOff = true;
-        view.visible.reset(view.scene->scene.objects.size(), true);
-    }
-    // A debug record describes the chain's own decisions: recording views cull synchronously.
-    else if (!view.async || recording || !view.async->cull(coreView, view.visible))
-    {
-        figures.asyncFallback = figures.async;
-        view.chain.cull(coreView, view.visible);
-    }
 }
 
 // After the cull: what the pager is asked for, kept fresh and fetched ahead (docs/paging.md).
@@ -318,11 +283,12 @@ void ViewCuller::drivePaging(PerView& view, osgUtil::CullVisitor& cv, const Pagi
                              const osg::Matrixd& projection, CullStatistics& figures)
 {
     const ExtractedScene& scene = *view.scene;
+    core::VisibleSet& visible = view.session.visible();
     const osg::FrameStamp* frameStamp = cv.getFrameStamp();
     const auto* pager = dynamic_cast<const osgDB::DatabasePager*>(cv.getDatabaseRequestHandler());
     const std::size_t residentBudget =
         pager ? pager->getTargetMaximumNumberOfPageLOD() : std::numeric_limits<std::size_t>::max();
-    const PagingFigures pagingFigures = applyPagingPolicy(paging, scene, view.visible, modelView, projection,
+    const PagingFigures pagingFigures = applyPagingPolicy(paging, scene, visible, modelView, projection,
                                                           frameStamp, residentBudget, view.placeholderLastVisible);
     figures.pagedNodesDeferred = pagingFigures.deferred;
     figures.pagedNodesKeptFresh = pagingFigures.keptFresh;
@@ -335,11 +301,11 @@ void ViewCuller::drivePaging(PerView& view, osgUtil::CullVisitor& cv, const Pagi
         const osg::Vec3d step = (eye - view.previousEye) / double(frame - view.previousFrame);
         const core::VisibleSet* seenAhead =
             paging.prefetchFrames != 0
-                ? regionSeenAhead(view.chain, view.async.get(), coreView, eye, step * double(paging.prefetchFrames),
-                                  view.visible.capacity(), view.seenAhead)
+                ? regionSeenAhead(view.session.chain(), view.session.async(), coreView, eye,
+                                  step * double(paging.prefetchFrames), visible.capacity(), view.seenAhead)
                 : nullptr;
         figures.pagedNodesPrefetched =
-            prefetchAhead(scene, view.visible, eye, step, paging.prefetchFrames, seenAhead, *handler, frameStamp);
+            prefetchAhead(scene, visible, eye, step, paging.prefetchFrames, seenAhead, *handler, frameStamp);
     }
     view.previousEye = eye;
     view.previousFrame = frame;
@@ -376,12 +342,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         record->clear();
     else
         debugLock.unlock();
-    if (view->debugRecord != record)
-    {
-        for (std::size_t stage = 0; stage < view->chain.size(); ++stage)
-            view->chain.module(stage).setDebugRecord(record);
-        view->debugRecord = record;
-    }
+    view->session.setDebugRecord(record);
 
     const auto start = std::chrono::steady_clock::now();
     handOver(*view, scene);
@@ -392,14 +353,19 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
                        viewport ? static_cast<std::uint32_t>(viewport->width()) : 1280u,
                        viewport ? static_cast<std::uint32_t>(viewport->height()) : 1024u);
     CullStatistics figures;
-    decide(*view, coreView, record != nullptr, start, figures);
+    view->session.cull(coreView, start);
+    const core::SessionFigures& answered = view->session.figures();
+    figures.async = answered.async;
+    figures.asyncFallback = answered.asyncFallback;
+    figures.backOff = answered.backOff;
+    figures.backedOff = answered.backedOff;
     if (!figures.backedOff)
         drivePaging(*view, cv, paging, coreView, modelView, projection, figures);
     const auto end = std::chrono::steady_clock::now();
     if (debugLock.owns_lock())
         debugLock.unlock();
 
-    countVisible(*scene, view->objects, view->visible, figures);
+    countVisible(*scene, view->objects, view->session.visible(), figures);
     figures.clustered = scene->clusteredDrawables != 0;
     figures.cullMs = std::chrono::duration<double, std::milli>(end - start).count();
     if (frameStamp)
@@ -410,7 +376,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         std::lock_guard<std::mutex> lock(_mutex);
         _last = figures;
     }
-    return {scene, &view->visible, figures.backedOff};
+    return {scene, &view->session.visible(), figures.backedOff};
 }
 
 CullStatistics ViewCuller::getLastStatistics() const

@@ -17,7 +17,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <chrono>
 #include <memory>
+#include <thread>
 
 using namespace osgVis::core;
 
@@ -450,4 +452,97 @@ TEST(VisApi, HierarchyAttributeAndMeshMisuse)
     const osgvis_view_desc view = lookDownMinusZ();
     ASSERT_EQ(osgvis_cull(context.get(), &view), OSGVIS_OK);
     EXPECT_EQ(visibleIds(context.get()), std::vector<ObjectId>{0});
+}
+
+// Version 1.2, the session a context culls through, as the OSG adapter's views do: with back-off on,
+// some frames skip the chain on its probing schedule (every object visible, said so), the others
+// answer exactly as the chain; off, every frame is the chain's.
+TEST(VisApi, BackOffSkipsTheChainOnItsScheduleAndSaysSo)
+{
+    const Scene scene = osgVis::test::randomBoxScene(31, 200);
+    const std::vector<View> views = osgVis::test::randomViews(32, 200);
+    for (const int backOff : {1, 0})
+    {
+        Context context = newContext();
+        describe(context.get(), scene);
+        const osgvis_session_desc session{0, backOff};
+        ASSERT_EQ(osgvis_context_set_session(context.get(), &session), OSGVIS_OK) << osgvis_last_error();
+        ASSERT_EQ(osgvis_context_set_mode(context.get(), "frustum"), OSGVIS_OK) << osgvis_last_error();
+        ModuleChain chain = createChain("frustum");
+        chain.setScene(scene);
+        int backedOff = 0;
+        for (const View& view : views)
+        {
+            const osgvis_view_desc desc = viewDesc(view);
+            ASSERT_EQ(osgvis_cull(context.get(), &desc), OSGVIS_OK) << osgvis_last_error();
+            osgvis_answer_info info{};
+            ASSERT_EQ(osgvis_answer_info_get(context.get(), &info), OSGVIS_OK) << osgvis_last_error();
+            EXPECT_EQ(info.from_region, 0);
+            EXPECT_EQ(info.region_missed, 0);
+            if (info.backed_off)
+            {
+                ++backedOff;
+                EXPECT_EQ(visibleIds(context.get()).size(), scene.objects.size());
+                continue;
+            }
+            VisibleSet expected;
+            chain.cull(view, expected);
+            EXPECT_EQ(visibleIds(context.get()), expected.ids());
+        }
+        if (backOff)
+            EXPECT_GE(backedOff, 8) << "one probe block of 8 frames in every 8 blocks at least once";
+        else
+            EXPECT_EQ(backedOff, 0);
+    }
+}
+
+// With async on, a worker answers regions ahead of a slowly moving eye: answers come from regions
+// once it has one, and every answer keeps what the chain sees, also after the renderer moves an
+// object (the worker gets a copy of the changed scene at the next cull).
+TEST(VisApi, AsyncAnswersFromRegionsAndNeverLosesWhatTheChainSees)
+{
+    Scene expectedScene;
+    Context context = newContext();
+    for (int i = 0; i < 10; ++i)
+    {
+        const double z = -3.0 - 2.0 * i, x = (i % 3) * 3.0 - 3.0;
+        osgvis_object_desc desc{{x - 0.5, -0.5, z - 0.5}, {x + 0.5, 0.5, z + 0.5}, 0, 0, nullptr, nullptr};
+        ASSERT_EQ(osgvis_scene_add_object(context.get(), &desc, nullptr), OSGVIS_OK);
+        expectedScene.addObject({Vec3(x - 0.5, -0.5, z - 0.5), Vec3(x + 0.5, 0.5, z + 0.5)}, 0, 0, "");
+    }
+    const osgvis_session_desc session{1, 0};
+    ASSERT_EQ(osgvis_context_set_session(context.get(), &session), OSGVIS_OK);
+    ASSERT_EQ(osgvis_context_set_mode(context.get(), "frustum"), OSGVIS_OK) << osgvis_last_error();
+    ModuleChain chain = createChain("frustum");
+    chain.setScene(expectedScene);
+    const Mat4 projection = glm::perspective(glm::radians(40.0), 1.0, 0.1, 100.0);
+    int fromRegion = 0;
+    for (int frame = 0; frame < 400; ++frame)
+    {
+        if (frame == 200)
+        {
+            // Object 0 (in view) moves behind the eye, object 9 (off to the side) into the middle.
+            const double behindMin[3] = {-0.5, -0.5, 9.5}, behindMax[3] = {0.5, 0.5, 10.5};
+            const double middleMin[3] = {-0.5, -0.5, -10.5}, middleMax[3] = {0.5, 0.5, -9.5};
+            ASSERT_EQ(osgvis_scene_move_object(context.get(), 0, behindMin, behindMax, nullptr, 0), OSGVIS_OK);
+            ASSERT_EQ(osgvis_scene_move_object(context.get(), 9, middleMin, middleMax, nullptr, 0), OSGVIS_OK);
+            expectedScene.objects[0].bounds = {Vec3(-0.5, -0.5, 9.5), Vec3(0.5, 0.5, 10.5)};
+            expectedScene.objects[9].bounds = {Vec3(-0.5, -0.5, -10.5), Vec3(0.5, 0.5, -9.5)};
+            chain.sceneChanged({SceneChange::Kind::Moved, {0, 9}});
+        }
+        const Vec3 eye(0.002 * frame, 0.0, 0.0);
+        const View view = makeView(glm::lookAt(eye, eye + Vec3(0, 0, -1), Vec3(0, 1, 0)), projection);
+        const osgvis_view_desc desc = viewDesc(view);
+        ASSERT_EQ(osgvis_cull(context.get(), &desc), OSGVIS_OK) << osgvis_last_error();
+        osgvis_answer_info info{};
+        ASSERT_EQ(osgvis_answer_info_get(context.get(), &info), OSGVIS_OK);
+        EXPECT_NE(info.from_region, info.region_missed);
+        fromRegion += info.from_region;
+        VisibleSet expected;
+        chain.cull(view, expected);
+        for (ObjectId id : expected.ids())
+            EXPECT_EQ(osgvis_is_visible(context.get(), id), 1) << "object " << id << " at frame " << frame;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    EXPECT_GT(fromRegion, 100) << "the worker should keep ahead of so slow an eye";
 }

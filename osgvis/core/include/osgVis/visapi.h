@@ -28,7 +28,7 @@ extern "C" {
 /** The API version a program or module is compiled against: major changes break the ABI; a minor
  * one only adds. A host loads a module of the same major and a minor no newer than its own. */
 #define OSGVIS_VISAPI_VERSION_MAJOR 1
-#define OSGVIS_VISAPI_VERSION_MINOR 1
+#define OSGVIS_VISAPI_VERSION_MINOR 2
 #define OSGVIS_VISAPI_VERSION ((OSGVIS_VISAPI_VERSION_MAJOR << 16) | OSGVIS_VISAPI_VERSION_MINOR)
 
 /** Id of no object (an occluder without owner). */
@@ -196,6 +196,30 @@ OSGVIS_VISAPI_EXPORT osgvis_status osgvis_scene_remove_object(osgvis_context* co
 /** Chooses the modules by name: "frustum", "frustum+octree", "frustum,mymodule" (a name no module
  * of the library has is looked for as a plugin). Builds them on the scene (may take long). */
 OSGVIS_VISAPI_EXPORT osgvis_status osgvis_context_set_mode(osgvis_context* context, const char* modes);
+
+/** Version 1.2. How osgvis_cull answers, as the OSG adapter's views do (docs/visapi.md): `async`
+ * nonzero gives the context a worker thread that answers regions of viewpoints ahead of the eye
+ * (modes with region answers; the others stay synchronous), so a cull only cuts a finished region's
+ * answer to its frustum, and culls with the chain when no region holds the view; `back_off` nonzero
+ * times the interval between osgvis_cull calls (a frame) with and without the chain, on synchronous
+ * culls, and skips the chain where it costs more than it saves (every object is visible then). Both
+ * 0 by default; takes effect at the next osgvis_context_set_mode. With `async`, each osgvis_cull after
+ * scene changes hands the worker a copy of the scene. */
+typedef struct osgvis_session_desc
+{
+    int async;
+    int back_off;
+} osgvis_session_desc;
+OSGVIS_VISAPI_EXPORT osgvis_status osgvis_context_set_session(osgvis_context* context,
+                                                              const osgvis_session_desc* session);
+/** Version 1.2. How the last osgvis_cull was answered (1 or 0 each): by the worker's region answer,
+ * by the chain although a worker runs (no region held the view), or with every object visible (the
+ * chain skipped by back-off). */
+typedef struct osgvis_answer_info
+{
+    int from_region, region_missed, backed_off;
+} osgvis_answer_info;
+OSGVIS_VISAPI_EXPORT osgvis_status osgvis_answer_info_get(const osgvis_context* context, osgvis_answer_info* info);
 
 /** Culls one view. Never culls a visible object unless a stage of the mode is approximate. */
 OSGVIS_VISAPI_EXPORT osgvis_status osgvis_cull(osgvis_context* context, const osgvis_view_desc* view);

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
-// The renderer side of osgVis/visapi.h: a context holds a core Scene, the module chain the mode
-// names, and the last answer. Each call checks its arguments and runs behind the exception boundary.
+// The renderer side of osgVis/visapi.h: a context holds a core Scene, the cull session (the module
+// chain the mode names, async and back-off as the OSG adapter's views have them), and the last
+// answer. Each call checks its arguments and runs behind the exception boundary.
 #include <osgVis/visapi.h>
 
 #include "CallbackHierarchy.h"
 #include "ErrorBoundary.h"
+
+#include <osgVis/core/session/CullSession.h>
 
 #include <chrono>
 #include <cmath>
@@ -18,8 +21,12 @@ using osgVis::core::capi::guarded;
 struct osgvis_context
 {
     Scene scene;
-    std::unique_ptr<ModuleChain> chain;
+    SessionOptions sessionOptions;
+    std::unique_ptr<CullSession> session; ///< null until a mode is chosen
+    /// Changes the worker's copy of the scene lacks (async sessions only): handed over at the next cull.
+    std::vector<SceneChange> pending;
     VisibleSet visible;
+    osgvis_answer_info answer{};
     bool answered = false;
     double cullMilliseconds = 0.0;
 };
@@ -89,10 +96,23 @@ std::vector<Vec3> polygonPoints(const double* points, std::uint32_t count)
     return out;
 }
 
+// The scene as the session takes it: the context's own, or, for a worker that reads it on its own
+// thread while the renderer edits the context's, a copy.
+std::shared_ptr<const Scene> sessionScene(const osgvis_context& context)
+{
+    if (context.sessionOptions.async && context.session && context.session->async())
+        return std::make_shared<const Scene>(context.scene);
+    return std::shared_ptr<const Scene>(&context.scene, [](const Scene*) {});
+}
+
 void notify(osgvis_context& context, SceneChange::Kind kind, ObjectId id)
 {
-    if (context.chain)
-        context.chain->sceneChanged({kind, {id}});
+    if (!context.session)
+        return;
+    if (context.session->async())
+        context.pending.push_back({kind, {id}});
+    else
+        context.session->sceneChanged({kind, {id}});
 }
 
 void requireObject(const osgvis_context& context, std::uint32_t id)
@@ -110,11 +130,16 @@ void requireAnswer(const osgvis_context* context)
 
 template <class Query> void timedQuery(osgvis_context& context, Query query)
 {
-    if (!context.chain)
+    if (!context.session)
         throw ApiFailure(OSGVIS_ERROR_BAD_STATE, "no mode chosen (osgvis_context_set_mode)");
     context.answered = false;
     const auto start = std::chrono::steady_clock::now();
-    query(*context.chain);
+    if (!context.pending.empty())
+    {
+        context.session->sceneReplaced(sessionScene(context), context.pending);
+        context.pending.clear();
+    }
+    query(*context.session, start);
     context.cullMilliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     context.answered = true;
@@ -229,7 +254,7 @@ osgvis_status osgvis_scene_remove_object(osgvis_context* context, uint32_t id)
                    {
                        require(context != nullptr, "null context");
                        requireObject(*context, id);
-                       if (!context->chain)
+                       if (!context->session)
                            throw ApiFailure(OSGVIS_ERROR_BAD_STATE,
                                             "removing needs a mode (a scene not yet culled is still "
                                             "being described: leave the object out)");
@@ -243,10 +268,35 @@ osgvis_status osgvis_context_set_mode(osgvis_context* context, const char* modes
                    [&]
                    {
                        require(context && modes, "null context or modes");
-                       auto chain = std::make_unique<ModuleChain>(createChain(modes));
-                       chain->setScene(context->scene);
-                       context->chain = std::move(chain);
+                       SessionOptions options = context->sessionOptions;
+                       options.modes = modes;
+                       context->session.reset(); // its worker joined before the new one starts
+                       context->pending.clear();
+                       context->session = std::make_unique<CullSession>(options);
+                       context->session->setScene(sessionScene(*context));
                        context->answered = false;
+                   });
+}
+
+osgvis_status osgvis_context_set_session(osgvis_context* context, const osgvis_session_desc* session)
+{
+    return guarded("osgvis_context_set_session",
+                   [&]
+                   {
+                       require(context && session, "null context or session");
+                       context->sessionOptions.async = session->async != 0;
+                       context->sessionOptions.backOff.enabled = session->back_off != 0;
+                   });
+}
+
+osgvis_status osgvis_answer_info_get(const osgvis_context* context, osgvis_answer_info* info)
+{
+    return guarded("osgvis_answer_info_get",
+                   [&]
+                   {
+                       requireAnswer(context);
+                       require(info != nullptr, "null output");
+                       *info = context->answer;
                    });
 }
 
@@ -258,7 +308,15 @@ osgvis_status osgvis_cull(osgvis_context* context, const osgvis_view_desc* view)
                        require(context && view, "null context or view");
                        const View v = makeView(mat4(view->view_matrix), mat4(view->projection_matrix), view->time,
                                                view->viewport_width, view->viewport_height);
-                       timedQuery(*context, [&](ModuleChain& chain) { chain.cull(v, context->visible); });
+                       timedQuery(*context,
+                                  [&](CullSession& session, std::chrono::steady_clock::time_point start)
+                                  {
+                                      context->visible = session.cull(v, start);
+                                      const SessionFigures& figures = session.figures();
+                                      context->answer.from_region = figures.async && !figures.asyncFallback;
+                                      context->answer.region_missed = figures.asyncFallback;
+                                      context->answer.backed_off = figures.backedOff;
+                                  });
                    });
 }
 
@@ -268,14 +326,19 @@ osgvis_status osgvis_cull_region(osgvis_context* context, const osgvis_region_de
                    [&]
                    {
                        require(context && region, "null context or region");
-                       if (context->chain && !context->chain->supportsRegions())
+                       if (context->session && !context->session->chain().supportsRegions())
                            throw ApiFailure(OSGVIS_ERROR_UNSUPPORTED,
-                                            "mode '" + context->chain->name() + "' has no region answers");
+                                            "mode '" + context->session->chain().name() + "' has no region answers");
                        ViewRegion r;
                        r.eyes = {vec3(region->eyes_min), vec3(region->eyes_max)};
                        r.minNearDistance = region->min_near_distance;
                        r.maxNearReach = region->max_near_reach;
-                       timedQuery(*context, [&](ModuleChain& chain) { chain.cullRegion(r, context->visible); });
+                       timedQuery(*context,
+                                  [&](CullSession& session, std::chrono::steady_clock::time_point)
+                                  {
+                                      session.chain().cullRegion(r, context->visible);
+                                      context->answer = {};
+                                  });
                    });
 }
 
@@ -327,7 +390,7 @@ osgvis_status osgvis_statistics_get(const osgvis_context* context, osgvis_statis
                            }
                        }
                        s.cull_milliseconds = context->cullMilliseconds;
-                       s.stage_count = static_cast<uint32_t>(context->chain->lastTimings().size());
+                       s.stage_count = static_cast<uint32_t>(context->session->chain().lastTimings().size());
                        *statistics = s;
                    });
 }
@@ -339,7 +402,7 @@ osgvis_status osgvis_stage_statistics(const osgvis_context* context, uint32_t in
                    [&]
                    {
                        requireAnswer(context);
-                       const std::vector<StageTiming>& timings = context->chain->lastTimings();
+                       const std::vector<StageTiming>& timings = context->session->chain().lastTimings();
                        if (index >= timings.size())
                            throw ApiFailure(OSGVIS_ERROR_INVALID_ARGUMENT, "no stage " + std::to_string(index));
                        if (name)
