@@ -154,6 +154,107 @@ struct PagedRow
     double medianFrameSeconds = 0;
 };
 
+// What a mode's run knows of the tiles from frame to frame.
+struct TileResidency
+{
+    explicit TileResidency(std::size_t tiles) : resident(tiles, false), drawables(tiles) {}
+
+    std::vector<bool> resident;
+    std::vector<std::vector<const osg::Drawable*>> drawables;
+    // A drawable may be drawn more than once in a tile: its instances, told apart by matrix.
+    std::unordered_map<const osg::Drawable*, std::vector<std::uint32_t>> objectsOf;
+};
+
+// Counts the tiles loaded and expired since the last frame and maps the drawables of those loaded to
+// their oracle objects; returns how many tiles are resident.
+std::size_t updateResidency(const std::vector<osg::PagedLOD*>& tiles, const FullDatabase& full,
+                            TileResidency& residency, PagedRow& row)
+{
+    std::size_t residentNow = 0;
+    for (std::size_t t = 0; t < tiles.size(); ++t)
+    {
+        const bool now = tiles[t]->getNumChildren() > 0;
+        residentNow += now;
+        std::vector<const osg::Drawable*>& drawables = residency.drawables[t];
+        if (now && !residency.resident[t])
+        {
+            ++row.loads;
+            row.bytesRead += double(full.tileBytes[t]);
+            drawables = drawablesOf(*tiles[t]->getChild(0));
+            if (drawables.size() != full.objectCount[t])
+                throw std::runtime_error("tile '" + tilePath(*tiles[t]) + "' loaded with other drawables than before");
+            for (std::size_t d = 0; d < drawables.size(); ++d)
+                residency.objectsOf[drawables[d]].push_back(full.firstObject[t] + std::uint32_t(d));
+        }
+        else if (!now && residency.resident[t])
+        {
+            ++row.expiries;
+            for (const osg::Drawable* d : drawables)
+                residency.objectsOf.erase(d);
+            drawables.clear();
+        }
+        residency.resident[t] = now;
+    }
+    return residentNow;
+}
+
+// Marks the oracle objects the last frame drew: a drawable's instance is the one whose world matrix
+// is nearest the leaf's.
+void markEmitted(const osgUtil::RenderStage& stage, const osg::Matrixd& viewMatrix, const TileResidency& residency,
+                 const FullDatabase& full, std::vector<bool>& emitted)
+{
+    std::fill(emitted.begin(), emitted.end(), false);
+    const osg::Matrixd inverseView = osg::Matrixd::inverse(viewMatrix);
+    forEachRenderLeaf(stage, [&](const osgUtil::RenderLeaf& leaf) {
+        const osg::Drawable* drawable = leaf.getDrawable();
+        if (const auto* part = dynamic_cast<const ClusterDraw*>(drawable))
+            drawable = part->original();
+        const auto found = residency.objectsOf.find(drawable);
+        if (found == residency.objectsOf.end() || !leaf._modelview.valid())
+            return;
+        const osg::Matrixd model = *leaf._modelview * inverseView;
+        std::uint32_t nearest = found->second.front();
+        double nearestDifference = std::numeric_limits<double>::max();
+        for (std::uint32_t object : found->second)
+        {
+            double difference = 0.0;
+            for (int i = 0; i < 16; ++i)
+                difference = std::max(difference, std::abs(model.ptr()[i] - full.world[object].ptr()[i]));
+            if (difference < nearestDifference)
+                nearest = object, nearestDifference = difference;
+        }
+        emitted[nearest] = true;
+    });
+}
+
+// The objects the oracle sees in a view that the mode missed: in a tile not loaded (pop-in), or in
+// a loaded tile but not drawn (false invisible).
+void countMisses(const oracle::IdBufferOracle::Result& seen, const FullDatabase& full,
+                 const std::vector<bool>& resident, const std::vector<bool>& emitted, PagedRow& row)
+{
+    bool popIn = false, missed = false;
+    for (std::size_t i = 0; i < seen.visible.size(); ++i)
+    {
+        const std::uint32_t object = seen.visible[i];
+        const std::uint32_t tile = full.tileOfObject[object];
+        if (tile == ~0u)
+            continue;
+        if (!resident[tile])
+        {
+            popIn = true;
+            ++row.popInObjects;
+            row.popInPixels += seen.pixels[i];
+        }
+        else if (!emitted[object])
+        {
+            missed = true;
+            ++row.falseInvisible;
+        }
+    }
+    row.popInFrames += popIn;
+    row.framesWithFalseInvisible += missed;
+}
+
 PagedRow runMode(const BenchMode& mode, const BenchOptions& options, const std::string& rootFile,
                  const FullDatabase& full, const std::vector<BenchView>& views, const core::Walk& walk,
                  const std::vector<oracle::IdBufferOracle::Result>& seen)
@@ -178,10 +279,7 @@ PagedRow runMode(const BenchMode& mode, const BenchOptions& options, const std::
     viewer.setDatabasePager(pager.get());
     viewer.setSceneData(graph.get());
 
-    std::vector<bool> resident(tiles.size(), false);
-    std::vector<std::vector<const osg::Drawable*>> drawables(tiles.size());
-    // A drawable may be drawn more than once in a tile: its instances, told apart by matrix.
-    std::unordered_map<const osg::Drawable*, std::vector<std::uint32_t>> objectsOf;
+    TileResidency residency(tiles.size());
     std::vector<double> frameSeconds;
     std::vector<bool> emitted(full.tileOfObject.size());
     Progress progress(mode.name + " (paged)", views.size());
@@ -190,76 +288,11 @@ PagedRow runMode(const BenchMode& mode, const BenchOptions& options, const std::
         frameSeconds.push_back(viewer.renderFrame(views[v]).seconds);
         // The update traversal of this frame merged and expired before its cull: what is resident now
         // is what the frame could draw.
-        std::size_t residentNow = 0;
-        for (std::size_t t = 0; t < tiles.size(); ++t)
-        {
-            const bool now = tiles[t]->getNumChildren() > 0;
-            residentNow += now;
-            if (now && !resident[t])
-            {
-                ++row.loads;
-                row.bytesRead += double(full.tileBytes[t]);
-                drawables[t] = drawablesOf(*tiles[t]->getChild(0));
-                if (drawables[t].size() != full.objectCount[t])
-                    throw std::runtime_error("tile '" + tilePath(*tiles[t]) + "' loaded with other drawables than before");
-                for (std::size_t d = 0; d < drawables[t].size(); ++d)
-                    objectsOf[drawables[t][d]].push_back(full.firstObject[t] + std::uint32_t(d));
-            }
-            else if (!now && resident[t])
-            {
-                ++row.expiries;
-                for (const osg::Drawable* d : drawables[t])
-                    objectsOf.erase(d);
-                drawables[t].clear();
-            }
-            resident[t] = now;
-        }
+        const std::size_t residentNow = updateResidency(tiles, full, residency, row);
         row.peakResident = std::max(row.peakResident, residentNow);
         row.peakHeapBytes = std::max(row.peakHeapBytes, heapBytes() - heapBefore);
-
-        std::fill(emitted.begin(), emitted.end(), false);
-        const osg::Matrixd inverseView = osg::Matrixd::inverse(views[v].view);
-        forEachRenderLeaf(viewer.lastRenderStage(), [&](const osgUtil::RenderLeaf& leaf) {
-            const osg::Drawable* drawable = leaf.getDrawable();
-            if (const auto* part = dynamic_cast<const ClusterDraw*>(drawable))
-                drawable = part->original();
-            const auto found = objectsOf.find(drawable);
-            if (found == objectsOf.end() || !leaf._modelview.valid())
-                return;
-            const osg::Matrixd model = *leaf._modelview * inverseView;
-            std::uint32_t nearest = found->second.front();
-            double nearestDifference = std::numeric_limits<double>::max();
-            for (std::uint32_t object : found->second)
-            {
-                double difference = 0.0;
-                for (int i = 0; i < 16; ++i)
-                    difference = std::max(difference, std::abs(model.ptr()[i] - full.world[object].ptr()[i]));
-                if (difference < nearestDifference)
-                    nearest = object, nearestDifference = difference;
-            }
-            emitted[nearest] = true;
-        });
-        bool popIn = false, missed = false;
-        for (std::size_t i = 0; i < seen[v].visible.size(); ++i)
-        {
-            const std::uint32_t object = seen[v].visible[i];
-            const std::uint32_t tile = full.tileOfObject[object];
-            if (tile == ~0u)
-                continue;
-            if (!resident[tile])
-            {
-                popIn = true;
-                ++row.popInObjects;
-                row.popInPixels += seen[v].pixels[i];
-            }
-            else if (!emitted[object])
-            {
-                missed = true;
-                ++row.falseInvisible;
-            }
-        }
-        row.popInFrames += popIn;
-        row.framesWithFalseInvisible += missed;
+        markEmitted(viewer.lastRenderStage(), views[v].view, residency, full, emitted);
+        countMisses(seen[v], full, residency.resident, emitted, row);
         progress.advance(v + 1);
     }
     row.filesRequested = pager->filesRequested();

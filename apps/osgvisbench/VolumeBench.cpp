@@ -72,37 +72,24 @@ void writeJson(std::ostream& out, const BenchOptions& options, const core::Aabb&
         << ",\n  \"occluders_inserted\": " << r.occludersInserted << ",\n  \"occluder_seconds\": " << r.occluderSeconds
         << ",\n  \"pvs_seconds\": " << r.pvsSeconds << "\n}\n";
 }
-} // namespace
 
-int runVolumeBench(const BenchOptions& options, std::ostream& out)
+oracle::VolumeOracleSettings oracleSettings(const BenchOptions& options)
 {
-    const core::Aabb box = volumeBox(options);
-    // The walk is loaded as for a walk run and not used.
-    const apps::LoadedScene loaded = loadBenchScene(options);
-    // The apps extract without triangles; the volume PVS tests triangles and counts them.
-    ExtractionOptions extraction;
-    extraction.keepTriangles = true;
-    const osg::ref_ptr<ExtractedScene> extracted = extractScene(*loaded.model, extraction);
-    const core::Scene& scene = extracted->scene;
-
-    // The oracle first: its near plane is the near distance the PVS must assume (a 90° cube face
-    // reaches √3 times as far as its near plane).
     oracle::VolumeOracleSettings settings;
     settings.faceSize = options.volumeFaceSize;
     settings.interiorEyes = options.volumeEyes;
     settings.supersample = 1;
-    oracle::VolumeOracle volumeOracle(loaded.model.get(), settings);
-    const oracle::VolumeVisibility seen = volumeOracle.visibleFrom(
-        osg::BoundingBoxd(box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z));
-    if (volumeOracle.triangleCount() != scene.triangles.size())
-        throw std::runtime_error("the oracle numbers " + std::to_string(volumeOracle.triangleCount()) +
-                                 " triangles, the extraction " + std::to_string(scene.triangles.size()));
+    return settings;
+}
 
+// The volume PVS of the box, timed: the occluders once, the PVS --volume-repeat times (median kept).
+core::VolumePvs timedVolumePvs(const core::Scene& scene, const core::Aabb& box, const BenchOptions& options,
+                               double oracleNear, VolumeRow& row)
+{
     core::MultifocalOptions multifocal;
     multifocal.planeResolution = int(options.planeResolution);
     multifocal.planesPerDirection = int(options.planesPerDirection);
-    multifocal.nearDistance = seen.zNear * std::sqrt(3.0);
-    VolumeRow row;
+    multifocal.nearDistance = oracleNear * std::sqrt(3.0);
     const Clock::time_point built = Clock::now();
     const std::vector<core::OccluderPolygon> occluders = core::volumeOccluders(scene);
     row.occluderSeconds = std::chrono::duration<double>(Clock::now() - built).count();
@@ -116,22 +103,13 @@ int runVolumeBench(const BenchOptions& options, std::ostream& out)
     }
     std::sort(seconds.begin(), seconds.end());
     row.pvsSeconds = seconds[seconds.size() / 2];
+    return pvs;
+}
 
-    row.objects = scene.objects.size();
-    row.pvsObjects = pvs.objects.count();
-    row.exactObjects = seen.objects.size();
-    for (std::uint32_t id : seen.objects)
-        row.missingObjects += pvs.objects.test(id) ? 0 : 1;
-    row.triangles = scene.triangles.size();
-    row.culledTriangles = pvs.statistics.trianglesCulled;
-    row.backFacing = pvs.statistics.trianglesBackFacing;
-    row.exactTriangles = seen.triangles.size();
-    std::vector<std::uint8_t> visible(scene.triangles.size(), 0);
-    for (std::uint32_t t : seen.triangles)
-    {
-        visible[t] = 1;
-        row.missingTriangles += pvs.hiddenTriangles.empty() || !pvs.hiddenTriangles[t] ? 0 : 1;
-    }
+// Of the triangles not facing away from the box, those the PVS culls and those the oracle finds hidden.
+void countRestTriangles(const core::Scene& scene, const core::Aabb& box, const core::VolumePvs& pvs,
+                        const std::vector<std::uint8_t>& visible, VolumeRow& row)
+{
     // Triangles facing away from every point of the box, counted as computeVolumePvs does.
     const core::Vec3 corners[8] = {{box.min.x, box.min.y, box.min.z}, {box.max.x, box.min.y, box.min.z},
                                    {box.min.x, box.max.y, box.min.z}, {box.max.x, box.max.y, box.min.z},
@@ -151,13 +129,39 @@ int runVolumeBench(const BenchOptions& options, std::ostream& out)
         row.restCulled += culled ? 1 : 0;
         row.restHidden += visible[t] ? 0 : 1;
     }
+}
+
+// The PVS against what the oracle saw: objects and triangles kept, seen and missing.
+void compareWithOracle(const core::Scene& scene, const core::Aabb& box, const core::VolumePvs& pvs,
+                       const oracle::VolumeVisibility& seen, VolumeRow& row)
+{
+    row.objects = scene.objects.size();
+    row.pvsObjects = pvs.objects.count();
+    row.exactObjects = seen.objects.size();
+    for (std::uint32_t id : seen.objects)
+        row.missingObjects += pvs.objects.test(id) ? 0 : 1;
+    row.triangles = scene.triangles.size();
+    row.culledTriangles = pvs.statistics.trianglesCulled;
+    row.backFacing = pvs.statistics.trianglesBackFacing;
+    row.exactTriangles = seen.triangles.size();
+    std::vector<std::uint8_t> visible(scene.triangles.size(), 0);
+    for (std::uint32_t t : seen.triangles)
+    {
+        visible[t] = 1;
+        row.missingTriangles += pvs.hiddenTriangles.empty() || !pvs.hiddenTriangles[t] ? 0 : 1;
+    }
+    countRestTriangles(scene, box, pvs, visible, row);
     row.planes = pvs.statistics.planes;
     row.occludersInserted = pvs.statistics.occludersInserted;
     row.eyes = seen.eyes.size();
     row.zNear = seen.zNear;
+}
 
+void printReport(std::ostream& out, const std::string& sceneName, const core::Aabb& box, const BenchOptions& options,
+                 const VolumeRow& row)
+{
     char line[512];
-    out << "volume PVS (multifocal) of " << loaded.name << ", box (" << box.min.x << ", " << box.min.y << ", "
+    out << "volume PVS (multifocal) of " << sceneName << ", box (" << box.min.x << ", " << box.min.y << ", "
         << box.min.z << ") - (" << box.max.x << ", " << box.max.y << ", " << box.max.z << "), "
         << options.planeResolution << "-pixel planes, " << options.planesPerDirection << " per face\n";
     std::snprintf(line, sizeof line, "  objects    %8zu  kept %8zu  exact %8zu  missing %zu\n", row.objects,
@@ -168,9 +172,9 @@ int runVolumeBench(const BenchOptions& options, std::ostream& out)
                   row.triangles, row.culledTriangles, percent(row.culledTriangles, row.triangles), row.backFacing,
                   percent(row.backFacing, row.triangles), row.exactTriangles, row.missingTriangles);
     out << line;
-    std::snprintf(line, sizeof line,
-                  "  not facing away %zu: culled %zu, hidden by the oracle %zu, efficacy %.3f\n", row.restTriangles,
-                  row.restCulled, row.restHidden, row.restHidden ? double(row.restCulled) / double(row.restHidden) : 0.0);
+    std::snprintf(line, sizeof line, "  not facing away %zu: culled %zu, hidden by the oracle %zu, efficacy %.3f\n",
+                  row.restTriangles, row.restCulled, row.restHidden,
+                  row.restHidden ? double(row.restCulled) / double(row.restHidden) : 0.0);
     out << line;
     std::snprintf(line, sizeof line,
                   "  time per volume %.3f s (median of %u; occluders %.3f s once), %u planes, %llu occluders inserted; "
@@ -178,6 +182,33 @@ int runVolumeBench(const BenchOptions& options, std::ostream& out)
                   row.pvsSeconds, std::max(1u, options.volumeRepeat), row.occluderSeconds, row.planes,
                   (unsigned long long)row.occludersInserted, row.eyes, options.volumeFaceSize, row.zNear);
     out << line;
+}
+} // namespace
+
+int runVolumeBench(const BenchOptions& options, std::ostream& out)
+{
+    const core::Aabb box = volumeBox(options);
+    // The walk is loaded as for a walk run and not used.
+    const apps::LoadedScene loaded = loadBenchScene(options);
+    // The apps extract without triangles; the volume PVS tests triangles and counts them.
+    ExtractionOptions extraction;
+    extraction.keepTriangles = true;
+    const osg::ref_ptr<ExtractedScene> extracted = extractScene(*loaded.model, extraction);
+    const core::Scene& scene = extracted->scene;
+
+    // The oracle first: its near plane is the near distance the PVS must assume (a 90° cube face
+    // reaches √3 times as far as its near plane).
+    oracle::VolumeOracle volumeOracle(loaded.model.get(), oracleSettings(options));
+    const oracle::VolumeVisibility seen = volumeOracle.visibleFrom(
+        osg::BoundingBoxd(box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z));
+    if (volumeOracle.triangleCount() != scene.triangles.size())
+        throw std::runtime_error("the oracle numbers " + std::to_string(volumeOracle.triangleCount()) +
+                                 " triangles, the extraction " + std::to_string(scene.triangles.size()));
+
+    VolumeRow row;
+    const core::VolumePvs pvs = timedVolumePvs(scene, box, options, seen.zNear, row);
+    compareWithOracle(scene, box, pvs, seen, row);
+    printReport(out, loaded.name, box, options, row);
     if (!options.jsonFile.empty())
         writeTextFile(options.jsonFile, "JSON report", [&](std::ostream& json) { writeJson(json, options, box, row); });
     const bool missing = row.missingObjects != 0 || row.missingTriangles != 0;

@@ -165,111 +165,158 @@ std::pair<std::uint32_t, std::uint32_t> parseShard(const std::string& text, cons
     const std::uint64_t k = parseCount("--shard", text.substr(0, slash), 1, n);
     return {std::uint32_t(k), std::uint32_t(n)};
 }
-} // namespace
 
-PvsToolOptions parsePvsToolOptions(int argc, char** argv, const char* (*environment)(const char*))
+// "A:B" with A < B: cells A to B-1.
+std::pair<std::uint32_t, std::uint32_t> parseCellRange(const std::string& flag, const std::string& range)
 {
-    if (!environment)
-        environment = [](const char* name) -> const char* { return std::getenv(name); };
-    PvsToolOptions o;
-    for (int i = 1; i < argc; ++i)
+    const std::size_t colon = range.find(':');
+    if (colon == std::string::npos)
+        throw UsageError("--cells expects A:B (cells A to B-1), got '" + range + "'");
+    const std::uint64_t first = parseCount(flag, range.substr(0, colon), 0, 4000000000u);
+    const std::uint64_t end = parseCount(flag, range.substr(colon + 1), 0, 4000000000u);
+    if (first >= end)
+        throw UsageError("--cells A:B needs A < B, got '" + range + "'");
+    return std::make_pair(std::uint32_t(first), std::uint32_t(end));
+}
+
+// One argument of the command line; value() takes the next one as its value.
+struct Argument
+{
+    std::string text;
+    int& index; // of text in argv: value() moves it on to the value
+    int argc;
+    char** argv;
+
+    std::string value() const
     {
-        const std::string arg = argv[i];
-        auto value = [&]() -> std::string
-        {
-            if (i + 1 >= argc)
-                throw UsageError(arg + " needs a value");
-            return argv[++i];
-        };
-        if (arg == "--help" || arg == "-h")
-            o.help = true;
-        else if (arg == "--version")
-            o.version = true;
-        else if (arg == "-o" || arg == "--output")
-            o.pvsFile = value();
-        else if (arg == "--json")
-            o.jsonFile = value();
-        else if (arg == "--progress")
-            o.forceProgress = true;
-        else if (arg == "--explain")
-            o.explain = true;
-        else if (arg == "--cells-from")
-        {
-            const std::string from = value();
-            if (from != "faces" && from != "solids")
-                throw UsageError("--cells-from is faces or solids, got '" + from + "'");
-            o.bake.subdivision.fromSolids = from == "solids";
-        }
-        else if (arg == "--min-coverage")
-            o.bake.subdivision.minCoverage = parseNumber(arg, value(), 0.0, 1.0);
-        else if (arg == "--min-face-area")
-            o.bake.subdivision.minFaceArea = parseNumber(arg, value(), 0.0, std::numeric_limits<double>::max());
-        else if (arg == "--min-cell-size")
-            o.bake.subdivision.minCellSize = parseNumber(arg, value(), 0.0, 1.0);
-        else if (arg == "--max-cells")
-            o.bake.subdivision.maxCells = std::uint32_t(parseCount(arg, value(), 1, 100000000));
-        else if (arg == "--stab-budget")
-            o.bake.stabBudget = std::uint32_t(parseCount(arg, value(), 1, 4000000000u));
-        else if (arg == "--threads")
-            o.bake.threads = unsigned(parseCount(arg, value(), 0, 4096));
-        else if (arg == "--method")
-        {
-            o.method = value();
-            if (o.method != "cellportal" && o.method != "multifocal")
-                throw UsageError("--method is cellportal or multifocal, got '" + o.method + "'");
-        }
-        else if (arg == "--plane-resolution")
-            o.multifocal.planeResolution = int(parseCount(arg, value(), 1, 4096));
-        else if (arg == "--planes")
-            o.multifocal.planesPerDirection = int(parseCount(arg, value(), 1, 64));
-        else if (arg == "--near")
-            o.nearDistance = parseNumber(arg, value(), 0.0, std::numeric_limits<double>::max());
-        else if (arg == "--grid")
-        {
-            const std::vector<double> v = parseNumbers(arg, value(), 6);
-            if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5]))
-                throw UsageError("--grid needs X0 < X1, Y0 < Y1 and Z0 < Z1");
-            o.grid = core::Aabb(core::Vec3(v[0], v[1], v[2]), core::Vec3(v[3], v[4], v[5]));
-        }
-        else if (arg == "--walk")
-            o.walkFile = value();
-        else if (arg == "--cell-size")
-        {
-            const std::vector<double> v = parseNumbers(arg, value(), 3);
-            if (!(v[0] > 0.0 && v[1] > 0.0 && v[2] > 0.0))
-                throw UsageError("--cell-size must be positive along every axis");
-            o.cellSize = core::Vec3(v[0], v[1], v[2]);
-        }
-        else if (arg == "--cell-origin")
-        {
-            const std::vector<double> v = parseNumbers(arg, value(), 3);
-            o.cellOrigin = core::Vec3(v[0], v[1], v[2]);
-        }
-        else if (arg == "--cells")
-        {
-            const std::string range = value();
-            const std::size_t colon = range.find(':');
-            if (colon == std::string::npos)
-                throw UsageError("--cells expects A:B (cells A to B-1), got '" + range + "'");
-            const std::uint64_t first = parseCount(arg, range.substr(0, colon), 0, 4000000000u);
-            const std::uint64_t end = parseCount(arg, range.substr(colon + 1), 0, 4000000000u);
-            if (first >= end)
-                throw UsageError("--cells A:B needs A < B, got '" + range + "'");
-            o.cellRange = std::make_pair(std::uint32_t(first), std::uint32_t(end));
-        }
-        else if (arg == "--shard")
-            o.shard = parseShard(value(), environment);
-        else if (arg == "--unit-cells")
-            o.unitCells = std::uint32_t(parseCount(arg, value(), 1, 100000000));
-        else if (!arg.empty() && arg[0] == '-')
-            throw UsageError("unknown argument '" + arg + "'");
-        else if (!o.modelFile.empty())
-            throw UsageError("one model only: got '" + o.modelFile + "' and '" + arg + "'");
-        else
-            o.modelFile = arg;
+        if (index + 1 >= argc)
+            throw UsageError(text + " needs a value");
+        return argv[++index];
     }
-    if (o.help || o.version)
-        return o;
+};
+
+// The parse*Option functions below each handle one topic and return whether the argument was theirs.
+
+// What the tool says besides baking: help, version, progress bar, explanation.
+bool parseGeneralOption(const Argument& arg, PvsToolOptions& o)
+{
+    if (arg.text == "--help" || arg.text == "-h")
+        o.help = true;
+    else if (arg.text == "--version")
+        o.version = true;
+    else if (arg.text == "--progress")
+        o.forceProgress = true;
+    else if (arg.text == "--explain")
+        o.explain = true;
+    else
+        return false;
+    return true;
+}
+
+bool parseOutputOption(const Argument& arg, PvsToolOptions& o)
+{
+    if (arg.text == "-o" || arg.text == "--output")
+        o.pvsFile = arg.value();
+    else if (arg.text == "--json")
+        o.jsonFile = arg.value();
+    else
+        return false;
+    return true;
+}
+
+// The cell-portal bake's subdivision and search, and the threads of either method.
+bool parseBakeOption(const Argument& arg, PvsToolOptions& o)
+{
+    if (arg.text == "--cells-from")
+    {
+        const std::string from = arg.value();
+        if (from != "faces" && from != "solids")
+            throw UsageError("--cells-from is faces or solids, got '" + from + "'");
+        o.bake.subdivision.fromSolids = from == "solids";
+    }
+    else if (arg.text == "--min-coverage")
+        o.bake.subdivision.minCoverage = parseNumber(arg.text, arg.value(), 0.0, 1.0);
+    else if (arg.text == "--min-face-area")
+        o.bake.subdivision.minFaceArea = parseNumber(arg.text, arg.value(), 0.0, std::numeric_limits<double>::max());
+    else if (arg.text == "--min-cell-size")
+        o.bake.subdivision.minCellSize = parseNumber(arg.text, arg.value(), 0.0, 1.0);
+    else if (arg.text == "--max-cells")
+        o.bake.subdivision.maxCells = std::uint32_t(parseCount(arg.text, arg.value(), 1, 100000000));
+    else if (arg.text == "--stab-budget")
+        o.bake.stabBudget = std::uint32_t(parseCount(arg.text, arg.value(), 1, 4000000000u));
+    else if (arg.text == "--threads")
+        o.bake.threads = unsigned(parseCount(arg.text, arg.value(), 0, 4096));
+    else
+        return false;
+    return true;
+}
+
+// The method, and the planes and near distance of the multifocal one.
+bool parseMethodOption(const Argument& arg, PvsToolOptions& o)
+{
+    if (arg.text == "--method")
+    {
+        o.method = arg.value();
+        if (o.method != "cellportal" && o.method != "multifocal")
+            throw UsageError("--method is cellportal or multifocal, got '" + o.method + "'");
+    }
+    else if (arg.text == "--plane-resolution")
+        o.multifocal.planeResolution = int(parseCount(arg.text, arg.value(), 1, 4096));
+    else if (arg.text == "--planes")
+        o.multifocal.planesPerDirection = int(parseCount(arg.text, arg.value(), 1, 64));
+    else if (arg.text == "--near")
+        o.nearDistance = parseNumber(arg.text, arg.value(), 0.0, std::numeric_limits<double>::max());
+    else
+        return false;
+    return true;
+}
+
+// Where the multifocal method's view cells are.
+bool parseViewCellOption(const Argument& arg, PvsToolOptions& o)
+{
+    if (arg.text == "--grid")
+    {
+        const std::vector<double> v = parseNumbers(arg.text, arg.value(), 6);
+        if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5]))
+            throw UsageError("--grid needs X0 < X1, Y0 < Y1 and Z0 < Z1");
+        o.grid = core::Aabb(core::Vec3(v[0], v[1], v[2]), core::Vec3(v[3], v[4], v[5]));
+    }
+    else if (arg.text == "--walk")
+        o.walkFile = arg.value();
+    else if (arg.text == "--cell-size")
+    {
+        const std::vector<double> v = parseNumbers(arg.text, arg.value(), 3);
+        if (!(v[0] > 0.0 && v[1] > 0.0 && v[2] > 0.0))
+            throw UsageError("--cell-size must be positive along every axis");
+        o.cellSize = core::Vec3(v[0], v[1], v[2]);
+    }
+    else if (arg.text == "--cell-origin")
+    {
+        const std::vector<double> v = parseNumbers(arg.text, arg.value(), 3);
+        o.cellOrigin = core::Vec3(v[0], v[1], v[2]);
+    }
+    else
+        return false;
+    return true;
+}
+
+// Splitting a bake into cell ranges and work units.
+bool parseSplitOption(const Argument& arg, PvsToolOptions& o, const char* (*environment)(const char*))
+{
+    if (arg.text == "--cells")
+        o.cellRange = parseCellRange(arg.text, arg.value());
+    else if (arg.text == "--shard")
+        o.shard = parseShard(arg.value(), environment);
+    else if (arg.text == "--unit-cells")
+        o.unitCells = std::uint32_t(parseCount(arg.text, arg.value(), 1, 100000000));
+    else
+        return false;
+    return true;
+}
+
+// A bake needs a model and an output, and options of one method only.
+void checkComplete(const PvsToolOptions& o)
+{
     if (o.modelFile.empty())
         throw UsageError("missing the model to bake (osgvispvs MODEL -o OUT.pvs)");
     if (o.pvsFile.empty())
@@ -283,6 +330,29 @@ PvsToolOptions parsePvsToolOptions(int argc, char** argv, const char* (*environm
         throw UsageError("give --cells or --shard, not both");
     if (o.grid && !o.walkFile.empty())
         throw UsageError("give --grid or --walk, not both");
+}
+} // namespace
+
+PvsToolOptions parsePvsToolOptions(int argc, char** argv, const char* (*environment)(const char*))
+{
+    if (!environment)
+        environment = [](const char* name) -> const char* { return std::getenv(name); };
+    PvsToolOptions o;
+    for (int i = 1; i < argc; ++i)
+    {
+        const Argument arg{argv[i], i, argc, argv};
+        if (parseGeneralOption(arg, o) || parseOutputOption(arg, o) || parseBakeOption(arg, o) ||
+            parseMethodOption(arg, o) || parseViewCellOption(arg, o) || parseSplitOption(arg, o, environment))
+            continue;
+        if (!arg.text.empty() && arg.text[0] == '-')
+            throw UsageError("unknown argument '" + arg.text + "'");
+        if (!o.modelFile.empty())
+            throw UsageError("one model only: got '" + o.modelFile + "' and '" + arg.text + "'");
+        o.modelFile = arg.text;
+    }
+    if (o.help || o.version)
+        return o;
+    checkComplete(o);
     return o;
 }
 } // namespace osgVis::pvstool

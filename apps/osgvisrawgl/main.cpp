@@ -137,132 +137,180 @@ double median(std::vector<double> values)
     return values[values.size() / 2];
 }
 
-int run(const RawOptions& options)
+// The model, which must exist and hold something to draw.
+RawScene loadScene(const std::string& model)
 {
-    if (!std::filesystem::is_regular_file(options.model))
-        throw RunError("cannot read model '" + options.model + "': no such file");
-    const RawScene scene = loadRawScene(options.model);
+    if (!std::filesystem::is_regular_file(model))
+        throw RunError("cannot read model '" + model + "': no such file");
+    RawScene scene = loadRawScene(model);
     if (scene.objects.empty())
-        throw RunError("model '" + options.model + "' has no mesh primitives: nothing to draw");
-    osgVis::core::Walk walk;
+        throw RunError("model '" + model + "' has no mesh primitives: nothing to draw");
+    return scene;
+}
+
+osgVis::core::Walk loadWalk(const RawOptions& options)
+{
     try
     {
-        walk = osgVis::core::Walk::load(walkPathFor(options));
+        return osgVis::core::Walk::load(walkPathFor(options));
     }
     catch (const osgVis::core::WalkError& e)
     {
         throw RunError(e.what());
     }
+}
 
-    std::unique_ptr<RawHierarchy> hierarchy = options.hierarchy ? std::make_unique<RawHierarchy>(scene) : nullptr;
+std::vector<ModeRun> makeModes(const RawOptions& options, const RawScene& scene, RawHierarchy* hierarchy)
+{
     std::vector<ModeRun> modes;
     for (const std::string& name : options.modes)
     {
         ModeRun mode;
         mode.name = name;
         mode.conservative = name.find("approx") == std::string::npos;
-        mode.context = makeContext(scene, name, hierarchy.get());
+        mode.context = makeContext(scene, name, hierarchy);
         modes.push_back(std::move(mode));
     }
-    if (!options.dumpDir.empty())
-    {
-        std::error_code error;
-        std::filesystem::create_directories(options.dumpDir, error);
-        if (!std::filesystem::is_directory(options.dumpDir))
-            throw RunError("cannot create the folder '" + options.dumpDir + "'");
-        writeObjects(std::filesystem::path(options.dumpDir) / "objects.txt", scene);
-        for (ModeRun& mode : modes)
-        {
-            const std::filesystem::path path = std::filesystem::path(options.dumpDir) / (mode.name + ".visible");
-            mode.dump.open(path);
-            if (!mode.dump)
-                throw RunError("cannot write '" + path.string() + "'");
-            mode.dump << "# osgvis-visible 1\n# mode " << mode.name << " views " << walk.keys.size() << " objects "
-                      << scene.objects.size() << "\n";
-        }
-    }
-    std::cerr << "scene: " << options.model << " (" << scene.objects.size() << " objects), walk: " << walk.keys.size()
-              << " views at " << walk.width << "x" << walk.height << std::endl;
+    return modes;
+}
 
-    RawRenderer renderer(scene, walk.width, walk.height, options.show);
-    const glm::dmat4 projection = walk.projection.matrix(walk.aspect());
+// --dump-visible DIR: the objects, and per mode a file that each view's visible set is added to.
+void openDumps(const std::string& dumpDir, const RawScene& scene, const osgVis::core::Walk& walk,
+               std::vector<ModeRun>& modes)
+{
+    std::error_code error;
+    std::filesystem::create_directories(dumpDir, error);
+    if (!std::filesystem::is_directory(dumpDir))
+        throw RunError("cannot create the folder '" + dumpDir + "'");
+    writeObjects(std::filesystem::path(dumpDir) / "objects.txt", scene);
+    for (ModeRun& mode : modes)
+    {
+        const std::filesystem::path path = std::filesystem::path(dumpDir) / (mode.name + ".visible");
+        mode.dump.open(path);
+        if (!mode.dump)
+            throw RunError("cannot write '" + path.string() + "'");
+        mode.dump << "# osgvis-visible 1\n# mode " << mode.name << " views " << walk.keys.size() << " objects "
+                  << scene.objects.size() << "\n";
+    }
+}
+
+// What the views of the walk share: buffers reused from view to view and mode to mode.
+struct WalkFrames
+{
     std::vector<std::uint8_t> unculled, culled;
-    std::vector<std::uint32_t> ids(scene.objects.size());
-    std::vector<bool> drawn(scene.objects.size());
+    std::vector<std::uint32_t> ids;
+    std::vector<bool> drawn;
     std::vector<std::string> names;
     std::size_t coveredPixels = 0, framePixels = 0; // of the unculled frames: is there anything to compare?
+};
+
+// Draws every object: the frame each mode's frame is compared with.
+void renderUnculled(RawRenderer& renderer, const glm::dmat4& view, const glm::dmat4& projection, WalkFrames& frames)
+{
+    renderer.render(view, projection, {});
+    renderer.readPixels(frames.unculled);
+    for (std::size_t p = 0; p + 3 < frames.unculled.size(); p += 4)
+        frames.coveredPixels += std::memcmp(&frames.unculled[p], RawRenderer::ClearColor, 4) != 0;
+    frames.framePixels += frames.unculled.size() / 4;
+}
+
+osgvis_view_desc viewDesc(const osgVis::core::Walk& walk, const osgVis::core::WalkKey& key, const glm::dmat4& view,
+                          const glm::dmat4& projection)
+{
+    osgvis_view_desc desc{};
+    std::memcpy(desc.view_matrix, glm::value_ptr(view), sizeof desc.view_matrix);
+    std::memcpy(desc.projection_matrix, glm::value_ptr(projection), sizeof desc.projection_matrix);
+    desc.time = key.time;
+    desc.viewport_width = walk.width;
+    desc.viewport_height = walk.height;
+    return desc;
+}
+
+// Culls view v in one mode: its figures, its visible set in frames.drawn and its line of the dump.
+void cullView(ModeRun& mode, const osgvis_view_desc& desc, std::size_t v, const RawScene& scene, WalkFrames& frames)
+{
+    require(osgvis_cull(mode.context.get(), &desc));
+    size_t written = 0, count = 0;
+    require(osgvis_visible_ids(mode.context.get(), frames.ids.data(), frames.ids.size(), &written, &count));
+    osgvis_statistics statistics{};
+    require(osgvis_statistics_get(mode.context.get(), &statistics));
+    mode.cullMs.push_back(statistics.cull_milliseconds);
+    mode.visibleSum += double(written);
+    std::fill(frames.drawn.begin(), frames.drawn.end(), false);
+    frames.names.clear();
+    for (std::size_t i = 0; i < written; ++i)
+    {
+        frames.drawn[frames.ids[i]] = true;
+        frames.names.push_back(scene.objects[frames.ids[i]].identity);
+    }
+    if (mode.dump.is_open())
+    {
+        std::sort(frames.names.begin(), frames.names.end());
+        mode.dump << v << " " << frames.names.size();
+        for (const std::string& name : frames.names)
+            mode.dump << " " << name;
+        mode.dump << "\n";
+    }
+}
+
+// Counts the pixels of the frame just drawn that differ from the unculled frame.
+void compareWithUnculled(ModeRun& mode, RawRenderer& renderer, WalkFrames& frames)
+{
+    renderer.readPixels(frames.culled);
+    std::size_t differing = 0;
+    for (std::size_t p = 0; p + 3 < frames.culled.size(); p += 4)
+        differing += std::memcmp(&frames.culled[p], &frames.unculled[p], 4) != 0;
+    mode.differingPixels += differing;
+    mode.viewsWithDifferences += differing != 0;
+}
+
+// Every view of the walk (until the window closes), culled and drawn in every mode.
+void runWalk(const RawOptions& options, const RawScene& scene, const osgVis::core::Walk& walk,
+             std::vector<ModeRun>& modes, RawRenderer& renderer, WalkFrames& frames)
+{
+    const glm::dmat4 projection = walk.projection.matrix(walk.aspect());
     for (std::size_t v = 0; v < walk.keys.size() && renderer.open(); ++v)
     {
         const osgVis::core::WalkKey& key = walk.keys[v];
         const glm::dmat4 view = key.viewMatrix();
         if (options.pixels)
-        {
-            renderer.render(view, projection, {});
-            renderer.readPixels(unculled);
-            for (std::size_t p = 0; p + 3 < unculled.size(); p += 4)
-                coveredPixels += std::memcmp(&unculled[p], RawRenderer::ClearColor, 4) != 0;
-            framePixels += unculled.size() / 4;
-        }
-        osgvis_view_desc desc{};
-        std::memcpy(desc.view_matrix, glm::value_ptr(view), sizeof desc.view_matrix);
-        std::memcpy(desc.projection_matrix, glm::value_ptr(projection), sizeof desc.projection_matrix);
-        desc.time = key.time;
-        desc.viewport_width = walk.width;
-        desc.viewport_height = walk.height;
+            renderUnculled(renderer, view, projection, frames);
+        const osgvis_view_desc desc = viewDesc(walk, key, view, projection);
         for (ModeRun& mode : modes)
         {
-            require(osgvis_cull(mode.context.get(), &desc));
-            size_t written = 0, count = 0;
-            require(osgvis_visible_ids(mode.context.get(), ids.data(), ids.size(), &written, &count));
-            osgvis_statistics statistics{};
-            require(osgvis_statistics_get(mode.context.get(), &statistics));
-            mode.cullMs.push_back(statistics.cull_milliseconds);
-            mode.visibleSum += double(written);
-            std::fill(drawn.begin(), drawn.end(), false);
-            names.clear();
-            for (std::size_t i = 0; i < written; ++i)
-            {
-                drawn[ids[i]] = true;
-                names.push_back(scene.objects[ids[i]].identity);
-            }
-            if (mode.dump.is_open())
-            {
-                std::sort(names.begin(), names.end());
-                mode.dump << v << " " << names.size();
-                for (const std::string& name : names)
-                    mode.dump << " " << name;
-                mode.dump << "\n";
-            }
-            renderer.render(view, projection, drawn);
+            cullView(mode, desc, v, scene, frames);
+            renderer.render(view, projection, frames.drawn);
             if (options.pixels)
-            {
-                renderer.readPixels(culled);
-                std::size_t differing = 0;
-                for (std::size_t p = 0; p + 3 < culled.size(); p += 4)
-                    differing += std::memcmp(&culled[p], &unculled[p], 4) != 0;
-                mode.differingPixels += differing;
-                mode.viewsWithDifferences += differing != 0;
-            }
+                compareWithUnculled(mode, renderer, frames);
         }
     }
+}
 
+void printModeRow(const ModeRun& mode, bool pixels)
+{
+    const std::size_t views = mode.cullMs.size();
+    std::cout << std::left << std::setw(24) << mode.name << std::right << std::setw(7) << views << std::setw(12)
+              << std::fixed << std::setprecision(1) << (views ? mode.visibleSum / double(views) : 0.0) << std::setw(10)
+              << std::setprecision(3) << median(mode.cullMs);
+    if (pixels)
+        std::cout << std::setw(19) << mode.differingPixels << " (" << mode.viewsWithDifferences << ")";
+    std::cout << "\n";
+}
+
+// Prints the table of the modes and closes their dumps; 1 where a conservative mode drew a pixel differently.
+int report(const RawOptions& options, std::vector<ModeRun>& modes, const WalkFrames& frames)
+{
     int status = 0;
     if (options.pixels)
         std::cout << "unculled frames: " << std::fixed << std::setprecision(1)
-                  << (framePixels ? 100.0 * double(coveredPixels) / double(framePixels) : 0.0)
+                  << (frames.framePixels ? 100.0 * double(frames.coveredPixels) / double(frames.framePixels) : 0.0)
                   << "% of the pixels show an object\n";
     std::cout << std::left << std::setw(24) << "mode" << std::right << std::setw(7) << "views" << std::setw(12)
               << "visible" << std::setw(10) << "cull ms" << (options.pixels ? "   pixels differing (views)" : "")
               << "\n";
     for (ModeRun& mode : modes)
     {
-        const std::size_t views = mode.cullMs.size();
-        std::cout << std::left << std::setw(24) << mode.name << std::right << std::setw(7) << views << std::setw(12)
-                  << std::fixed << std::setprecision(1) << (views ? mode.visibleSum / double(views) : 0.0)
-                  << std::setw(10) << std::setprecision(3) << median(mode.cullMs);
-        if (options.pixels)
-            std::cout << std::setw(19) << mode.differingPixels << " (" << mode.viewsWithDifferences << ")";
-        std::cout << "\n";
+        printModeRow(mode, options.pixels);
         if (mode.dump.is_open())
         {
             mode.dump.close();
@@ -279,6 +327,25 @@ int run(const RawOptions& options)
     }
     std::cout.flush();
     return status;
+}
+
+int run(const RawOptions& options)
+{
+    const RawScene scene = loadScene(options.model);
+    const osgVis::core::Walk walk = loadWalk(options);
+    std::unique_ptr<RawHierarchy> hierarchy = options.hierarchy ? std::make_unique<RawHierarchy>(scene) : nullptr;
+    std::vector<ModeRun> modes = makeModes(options, scene, hierarchy.get());
+    if (!options.dumpDir.empty())
+        openDumps(options.dumpDir, scene, walk, modes);
+    std::cerr << "scene: " << options.model << " (" << scene.objects.size() << " objects), walk: " << walk.keys.size()
+              << " views at " << walk.width << "x" << walk.height << std::endl;
+
+    RawRenderer renderer(scene, walk.width, walk.height, options.show);
+    WalkFrames frames;
+    frames.ids.resize(scene.objects.size());
+    frames.drawn.resize(scene.objects.size());
+    runWalk(options, scene, walk, modes, renderer, frames);
+    return report(options, modes, frames);
 }
 } // namespace
 

@@ -54,124 +54,139 @@ bool CoverageTriangulation::Impl::insertSegment(std::int32_t p0, std::int32_t q0
             markConstraint(e, piece.original, true);
             continue;
         }
-        const GridPoint P = points[p], Q = points[q];
-        // The triangle around p whose angle holds the direction to q (or a vertex on the ray).
-        std::int32_t start = -1, vertexOnRay = -1;
-        for (int dir = 0; dir < 2 && start < 0 && vertexOnRay < 0; ++dir)
-        {
-            std::int32_t t = pointTriangle[p];
-            for (std::size_t guard = 0; t >= 0 && guard <= tris.size(); ++guard)
-            {
-                const int i = indexOf(t, p);
-                const std::int32_t a = tris[t].v[(i + 1) % 3], b = tris[t].v[(i + 2) % 3];
-                const std::int64_t oa = orient(P, points[a], Q), ob = orient(P, points[b], Q);
-                if (oa == 0 && dot(P, points[a], Q) > 0)
-                {
-                    vertexOnRay = a;
-                    break;
-                }
-                if (ob == 0 && dot(P, points[b], Q) > 0)
-                {
-                    vertexOnRay = b;
-                    break;
-                }
-                if (oa > 0 && ob < 0)
-                {
-                    start = t;
-                    break;
-                }
-                t = dir == 0 ? tris[t].n[(i + 1) % 3] : tris[t].n[(i + 2) % 3];
-                if (t == pointTriangle[p])
-                    break;
-            }
-        }
-        if (vertexOnRay >= 0)
+        const PieceStart start = startOfPiece(p, q);
+        if (start.vertexOnRay >= 0)
         {
             // note: a vertex exactly on p→q lies within the band of the original, like p and q.
-            pieces.push_back({vertexOnRay, q, piece.original});
-            pieces.push_back({p, vertexOnRay, piece.original});
+            pieces.push_back({start.vertexOnRay, q, piece.original});
+            pieces.push_back({p, start.vertexOnRay, piece.original});
             continue;
         }
-        if (start < 0)
+        if (start.triangle < 0)
             return false;
-        crossed.clear();
-        std::int32_t t = start;
-        int exitSide = indexOf(t, p);
-        std::int32_t r = tris[t].v[(exitSide + 1) % 3], l = tris[t].v[(exitSide + 2) % 3];
-        bool done = false;
-        while (!done)
-        {
-            if (tris[t].c[exitSide] >= 0)
-            {
-                // A constraint r–l crosses p→q: both meet at the rounded crossing of their originals.
-                const std::int32_t other = tris[t].c[exitSide];
-                const OriginalSegment& s = originals[piece.original];
-                const OriginalSegment& e = originals[other];
-                GridPoint c;
-                bool proper = false;
-                if (!roundedCrossing(s.a, s.b, e.a, e.b, c, proper) || !proper)
-                {
-                    // The originals do not meet (their pieces do, after rounding): take, of the
-                    // rounded crossing of the pieces and the four end points, the one nearest to
-                    // both originals (docs/cdt.md: no proven bound here, measured instead).
-                    ++roundingFallbacks;
-                    roundedCrossing(P, Q, points[r], points[l], c, proper);
-                    const auto worse = [&](GridPoint g) { return std::max(linfDistance(g, s), linfDistance(g, e)); };
-                    double best = worse(c);
-                    for (const std::int32_t v : {r, l, p, q})
-                        if (const double d = worse(points[v]); d < best)
-                            best = d, c = points[v];
-                }
-                ++stats.crossings;
-                const std::int32_t cv = insertPoint(c);
-                if (cv < 0)
-                    return false;
-                if (cv != r && cv != l)
-                {
-                    if (const EdgeRef old = findEdge(r, l); old.t >= 0)
-                    {
-                        markConstraint(old, -1, false);
-                        legalizeQueue.push_back({r, l});
-                        pieces.push_back({r, cv, other});
-                        pieces.push_back({cv, l, other});
-                    }
-                }
-                pieces.push_back({cv, q, piece.original});
-                pieces.push_back({p, cv, piece.original});
-                done = true;
-                continue;
-            }
-            const std::int32_t tn = tris[t].n[exitSide];
-            if (tn < 0)
-                return false;
-            crossed.push_back({r, l});
-            const std::int32_t o = farVertex(tn, r, l);
-            if (o == q)
-            {
-                if (!insertPieceByFlips(p, q, piece.original))
-                    return false;
-                done = true;
-                continue;
-            }
-            const std::int64_t so = orient(P, Q, points[o]);
-            if (so == 0)
-            {
-                pieces.push_back({o, q, piece.original});
-                if (!insertPieceByFlips(p, o, piece.original))
-                    return false;
-                done = true;
-                continue;
-            }
-            if (so > 0)
-                l = o;
-            else
-                r = o;
-            t = tn;
-            exitSide = indexOf(t, farVertex(t, r, l));
-        }
+        if (!walkPiece(piece, start.triangle))
+            return false;
         legalize();
     }
     return true;
+}
+
+PieceStart CoverageTriangulation::Impl::startOfPiece(std::int32_t p, std::int32_t q) const
+{
+    const GridPoint P = points[p], Q = points[q];
+    // The triangle around p whose angle holds the direction to q (or a vertex on the ray).
+    std::int32_t start = -1, vertexOnRay = -1;
+    for (int dir = 0; dir < 2 && start < 0 && vertexOnRay < 0; ++dir)
+    {
+        std::int32_t t = pointTriangle[p];
+        for (std::size_t guard = 0; t >= 0 && guard <= tris.size(); ++guard)
+        {
+            const int i = indexOf(t, p);
+            const std::int32_t a = tris[t].v[(i + 1) % 3], b = tris[t].v[(i + 2) % 3];
+            const std::int64_t oa = orient(P, points[a], Q), ob = orient(P, points[b], Q);
+            if (oa == 0 && dot(P, points[a], Q) > 0)
+            {
+                vertexOnRay = a;
+                break;
+            }
+            if (ob == 0 && dot(P, points[b], Q) > 0)
+            {
+                vertexOnRay = b;
+                break;
+            }
+            if (oa > 0 && ob < 0)
+            {
+                start = t;
+                break;
+            }
+            t = dir == 0 ? tris[t].n[(i + 1) % 3] : tris[t].n[(i + 2) % 3];
+            if (t == pointTriangle[p])
+                break;
+        }
+    }
+    return {start, vertexOnRay};
+}
+
+bool CoverageTriangulation::Impl::walkPiece(const Piece& piece, std::int32_t start)
+{
+    const std::int32_t p = piece.p, q = piece.q;
+    const GridPoint P = points[p], Q = points[q];
+    crossed.clear();
+    std::int32_t t = start;
+    int exitSide = indexOf(t, p);
+    std::int32_t r = tris[t].v[(exitSide + 1) % 3], l = tris[t].v[(exitSide + 2) % 3];
+    while (true)
+    {
+        if (tris[t].c[exitSide] >= 0)
+            return splitAtConstraint(piece, r, l, tris[t].c[exitSide]);
+        const std::int32_t tn = tris[t].n[exitSide];
+        if (tn < 0)
+            return false;
+        crossed.push_back({r, l});
+        const std::int32_t o = farVertex(tn, r, l);
+        if (o == q)
+            return insertPieceByFlips(p, q, piece.original);
+        const std::int64_t so = orient(P, Q, points[o]);
+        if (so == 0)
+        {
+            pieces.push_back({o, q, piece.original});
+            return insertPieceByFlips(p, o, piece.original);
+        }
+        if (so > 0)
+            l = o;
+        else
+            r = o;
+        t = tn;
+        exitSide = indexOf(t, farVertex(t, r, l));
+    }
+}
+
+bool CoverageTriangulation::Impl::splitAtConstraint(const Piece& piece, std::int32_t r, std::int32_t l,
+                                                    std::int32_t other)
+{
+    // A constraint r–l crosses p→q: both meet at the rounded crossing of their originals.
+    const GridPoint c = constraintCrossing(piece, r, l, other);
+    ++stats.crossings;
+    const std::int32_t cv = insertPoint(c);
+    if (cv < 0)
+        return false;
+    if (cv != r && cv != l)
+    {
+        if (const EdgeRef old = findEdge(r, l); old.t >= 0)
+        {
+            markConstraint(old, -1, false);
+            legalizeQueue.push_back({r, l});
+            pieces.push_back({r, cv, other});
+            pieces.push_back({cv, l, other});
+        }
+    }
+    pieces.push_back({cv, piece.q, piece.original});
+    pieces.push_back({piece.p, cv, piece.original});
+    return true;
+}
+
+GridPoint CoverageTriangulation::Impl::constraintCrossing(const Piece& piece, std::int32_t r, std::int32_t l,
+                                                          std::int32_t other)
+{
+    const std::int32_t p = piece.p, q = piece.q;
+    const OriginalSegment& s = originals[piece.original];
+    const OriginalSegment& e = originals[other];
+    GridPoint c;
+    bool proper = false;
+    if (!roundedCrossing(s.a, s.b, e.a, e.b, c, proper) || !proper)
+    {
+        // The originals do not meet (their pieces do, after rounding): take, of the
+        // rounded crossing of the pieces and the four end points, the one nearest to
+        // both originals (docs/cdt.md: no proven bound here, measured instead).
+        ++roundingFallbacks;
+        roundedCrossing(points[p], points[q], points[r], points[l], c, proper);
+        const auto worse = [&](GridPoint g) { return std::max(linfDistance(g, s), linfDistance(g, e)); };
+        double best = worse(c);
+        for (const std::int32_t v : {r, l, p, q})
+            if (const double d = worse(points[v]); d < best)
+                best = d, c = points[v];
+    }
+    return c;
 }
 
 bool CoverageTriangulation::Impl::insertPieceByFlips(std::int32_t p, std::int32_t q, std::int32_t original)

@@ -189,101 +189,14 @@ bool CoverageTriangulation::insertOccluder(const GridPoint* ccw, std::size_t cou
 {
     Impl& m = *_impl;
     std::size_t i0 = 0;
-    bool ok = ccw && count >= 3 && count < (std::size_t(1) << 20);
-    for (std::size_t i = 0; ok && i < count; ++i)
-        ok = std::abs(std::int64_t(ccw[i].x)) <= GridLimit && std::abs(std::int64_t(ccw[i].y)) <= GridLimit;
-    ok = ok && convexPositive(ccw, count, i0);
-    if (ok && m.budget && m.budgetUsed + count > m.budget)
-        ok = false;
-    // Clip to the rectangle (Sutherland-Hodgman, crossings rounded: the cover is certified
-    // against the unclipped polygon, so the clipped outline only needs to be near it).
-    std::vector<GridPoint>& a = m.clipA;
-    std::vector<GridPoint>& b = m.clipB;
-    if (ok)
-    {
-        a.assign(ccw, ccw + count);
-        for (int side = 0; side < 4 && !a.empty(); ++side)
-        {
-            b.clear();
-            const auto inside = [&](GridPoint p) {
-                return side == 0 ? p.x >= m.x0 : side == 1 ? p.x <= m.x1 : side == 2 ? p.y >= m.y0 : p.y <= m.y1;
-            };
-            const auto cut = [&](GridPoint p, GridPoint q)
-            {
-                const bool vertical = side < 2;
-                const std::int64_t k = side == 0 ? m.x0 : side == 1 ? m.x1 : side == 2 ? m.y0 : m.y1;
-                const std::int64_t pa = vertical ? p.x : p.y, qa = vertical ? q.x : q.y;
-                const std::int64_t pb = vertical ? p.y : p.x, qb = vertical ? q.y : q.x;
-                const std::int32_t other =
-                    std::int32_t(roundDiv(Wide(pb) * (qa - pa) + Wide(k - pa) * (qb - pb), qa - pa));
-                return vertical ? GridPoint{std::int32_t(k), other} : GridPoint{other, std::int32_t(k)};
-            };
-            for (std::size_t i = 0; i < a.size(); ++i)
-            {
-                const GridPoint p = a[i], q = a[(i + 1) % a.size()];
-                if (inside(p))
-                    b.push_back(p);
-                if (inside(p) != inside(q))
-                    b.push_back(cut(p, q));
-            }
-            a.swap(b);
-        }
-        b.clear();
-        for (std::size_t i = 0; i < a.size(); ++i)
-            if (b.empty() || a[i] != b.back())
-                b.push_back(a[i]);
-        while (b.size() > 1 && b.front() == b.back())
-            b.pop_back();
-        ok = b.size() >= 3 && convexPositive(b.data(), b.size(), i0);
-    }
-    if (!ok)
+    if (!m.acceptsOccluder(ccw, count) || !m.clipToRectangle(ccw, count, i0))
     {
         ++m.stats.occludersRefused;
         return false;
     }
-    const std::vector<GridPoint>& poly = b;
-    Occluder o;
-    o.first = std::uint32_t(m.occluderPoints.size());
-    o.count = std::uint32_t(count);
-    o.kind = kind;
-    o.nearness = nearness;
-    o.minX = o.maxX = ccw[0].x;
-    o.minY = o.maxY = ccw[0].y;
-    for (std::size_t i = 0; i < count; ++i)
-    {
-        m.occluderPoints.push_back(ccw[i]);
-        const GridPoint a = ccw[i], b = ccw[(i + 1) % count];
-        const std::int64_t dx = std::int64_t(b.x) - a.x, dy = std::int64_t(b.y) - a.y;
-        m.occluderEdges.push_back({a.x, a.y, dx, dy, std::abs(dx) + std::abs(dy)});
-        o.minX = std::min<std::int64_t>(o.minX, ccw[i].x), o.maxX = std::max<std::int64_t>(o.maxX, ccw[i].x);
-        o.minY = std::min<std::int64_t>(o.minY, ccw[i].y), o.maxY = std::max<std::int64_t>(o.maxY, ccw[i].y);
-    }
-    const std::int32_t occluder = std::int32_t(m.occluders.size());
-    m.occluders.push_back(o);
-    m.budgetUsed += std::uint32_t(count);
-
-    // Vertices, then the edges as constraints (each remembers its original segment).
-    std::int32_t firstVertex = -1, previous = -1;
-    bool complete = true;
-    for (std::size_t i = 0; i <= poly.size() && complete; ++i)
-    {
-        const std::int32_t v = i < poly.size() ? m.insertPoint(poly[i]) : firstVertex;
-        if (v < 0)
-        {
-            complete = false;
-            break;
-        }
-        if (i == 0)
-            firstVertex = v;
-        else
-        {
-            const std::int32_t original = std::int32_t(m.originals.size());
-            m.originals.push_back({poly[i - 1], poly[i % poly.size()]});
-            complete = m.insertSegment(previous, v, original);
-            ++m.stats.constraintEdges;
-        }
-        previous = v;
-    }
+    const std::vector<GridPoint>& poly = m.clipB;
+    const std::int32_t occluder = m.addOccluder(ccw, count, kind, nearness);
+    const std::int32_t firstVertex = m.insertOutline(poly);
     const std::int64_t X3 = std::int64_t(poly[0].x) + poly[i0].x + poly[i0 + 1].x;
     const std::int64_t Y3 = std::int64_t(poly[0].y) + poly[i0].y + poly[i0 + 1].y;
     // note: even an incomplete outline covers soundly: covers are certified triangle by triangle.
@@ -293,6 +206,111 @@ bool CoverageTriangulation::insertOccluder(const GridPoint* ccw, std::size_t cou
     ++m.stats.occludersInserted;
     m.stats.triangles = std::uint32_t(m.tris.size());
     return true;
+}
+
+bool CoverageTriangulation::Impl::acceptsOccluder(const GridPoint* ccw, std::size_t count) const
+{
+    std::size_t i0 = 0;
+    bool ok = ccw && count >= 3 && count < (std::size_t(1) << 20);
+    for (std::size_t i = 0; ok && i < count; ++i)
+        ok = std::abs(std::int64_t(ccw[i].x)) <= GridLimit && std::abs(std::int64_t(ccw[i].y)) <= GridLimit;
+    ok = ok && convexPositive(ccw, count, i0);
+    if (ok && budget && budgetUsed + count > budget)
+        ok = false;
+    return ok;
+}
+
+// Clip to the rectangle (Sutherland-Hodgman, crossings rounded: the cover is certified
+// against the unclipped polygon, so the clipped outline only needs to be near it).
+bool CoverageTriangulation::Impl::clipToRectangle(const GridPoint* ccw, std::size_t count, std::size_t& i0)
+{
+    std::vector<GridPoint>& a = clipA;
+    std::vector<GridPoint>& b = clipB;
+    a.assign(ccw, ccw + count);
+    for (int side = 0; side < 4 && !a.empty(); ++side)
+    {
+        b.clear();
+        const auto inside = [&](GridPoint p) {
+            return side == 0 ? p.x >= x0 : side == 1 ? p.x <= x1 : side == 2 ? p.y >= y0 : p.y <= y1;
+        };
+        const auto cut = [&](GridPoint p, GridPoint q)
+        {
+            const bool vertical = side < 2;
+            const std::int64_t k = side == 0 ? x0 : side == 1 ? x1 : side == 2 ? y0 : y1;
+            const std::int64_t pa = vertical ? p.x : p.y, qa = vertical ? q.x : q.y;
+            const std::int64_t pb = vertical ? p.y : p.x, qb = vertical ? q.y : q.x;
+            const std::int32_t other = std::int32_t(roundDiv(Wide(pb) * (qa - pa) + Wide(k - pa) * (qb - pb), qa - pa));
+            return vertical ? GridPoint{std::int32_t(k), other} : GridPoint{other, std::int32_t(k)};
+        };
+        for (std::size_t i = 0; i < a.size(); ++i)
+        {
+            const GridPoint p = a[i], q = a[(i + 1) % a.size()];
+            if (inside(p))
+                b.push_back(p);
+            if (inside(p) != inside(q))
+                b.push_back(cut(p, q));
+        }
+        a.swap(b);
+    }
+    b.clear();
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (b.empty() || a[i] != b.back())
+            b.push_back(a[i]);
+    while (b.size() > 1 && b.front() == b.back())
+        b.pop_back();
+    return b.size() >= 3 && convexPositive(b.data(), b.size(), i0);
+}
+
+std::int32_t CoverageTriangulation::Impl::addOccluder(const GridPoint* ccw, std::size_t count, CoverKind kind,
+                                                      const AffineNearness& nearness)
+{
+    Occluder o;
+    o.first = std::uint32_t(occluderPoints.size());
+    o.count = std::uint32_t(count);
+    o.kind = kind;
+    o.nearness = nearness;
+    o.minX = o.maxX = ccw[0].x;
+    o.minY = o.maxY = ccw[0].y;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        occluderPoints.push_back(ccw[i]);
+        const GridPoint a = ccw[i], b = ccw[(i + 1) % count];
+        const std::int64_t dx = std::int64_t(b.x) - a.x, dy = std::int64_t(b.y) - a.y;
+        occluderEdges.push_back({a.x, a.y, dx, dy, std::abs(dx) + std::abs(dy)});
+        o.minX = std::min<std::int64_t>(o.minX, ccw[i].x), o.maxX = std::max<std::int64_t>(o.maxX, ccw[i].x);
+        o.minY = std::min<std::int64_t>(o.minY, ccw[i].y), o.maxY = std::max<std::int64_t>(o.maxY, ccw[i].y);
+    }
+    const std::int32_t occluder = std::int32_t(occluders.size());
+    occluders.push_back(o);
+    budgetUsed += std::uint32_t(count);
+    return occluder;
+}
+
+// Vertices, then the edges as constraints (each remembers its original segment).
+std::int32_t CoverageTriangulation::Impl::insertOutline(const std::vector<GridPoint>& poly)
+{
+    std::int32_t firstVertex = -1, previous = -1;
+    bool complete = true;
+    for (std::size_t i = 0; i <= poly.size() && complete; ++i)
+    {
+        const std::int32_t v = i < poly.size() ? insertPoint(poly[i]) : firstVertex;
+        if (v < 0)
+        {
+            complete = false;
+            break;
+        }
+        if (i == 0)
+            firstVertex = v;
+        else
+        {
+            const std::int32_t original = std::int32_t(originals.size());
+            originals.push_back({poly[i - 1], poly[i % poly.size()]});
+            complete = insertSegment(previous, v, original);
+            ++stats.constraintEdges;
+        }
+        previous = v;
+    }
+    return firstVertex;
 }
 
 bool CoverageTriangulation::hidden(const GridPoint* q, std::size_t count, QueryMode mode, double nearestW) const

@@ -78,6 +78,13 @@ struct Piece
     std::int32_t p, q, original;
 };
 
+/// Where the walk of a piece p→q starts: the triangle around p whose angle holds the direction to
+/// q, or a vertex exactly on the ray from p towards q (-1: none).
+struct PieceStart
+{
+    std::int32_t triangle = -1, vertexOnRay = -1;
+};
+
 struct CoverageTriangulation::Impl
 {
     std::vector<GridPoint> points;
@@ -135,6 +142,14 @@ struct CoverageTriangulation::Impl
     // CdtConstraints.cpp
     /// Inserts the pieces of originals[original] from vertex p to vertex q. False when it gave up.
     bool insertSegment(std::int32_t p, std::int32_t q, std::int32_t original);
+    PieceStart startOfPiece(std::int32_t p, std::int32_t q) const;
+    /// Walks the piece from triangle `start` through the edges it crosses until it meets q, a
+    /// vertex on it or a constraint: inserts it (by flips) or splits it. False when it gave up.
+    bool walkPiece(const Piece& piece, std::int32_t start);
+    /// The constraint r–l (of originals[other]) crosses the piece: splits both at one new vertex.
+    bool splitAtConstraint(const Piece& piece, std::int32_t r, std::int32_t l, std::int32_t other);
+    /// Where the piece and the constraint r–l meet: the rounded crossing of their originals.
+    GridPoint constraintCrossing(const Piece& piece, std::int32_t r, std::int32_t l, std::int32_t other);
     bool insertPieceByFlips(std::int32_t p, std::int32_t q, std::int32_t original);
     void markConstraint(EdgeRef e, std::int32_t original, bool on);
     std::int32_t farVertex(std::int32_t t, std::int32_t u, std::int32_t w) const
@@ -151,5 +166,14 @@ struct CoverageTriangulation::Impl
     /// Clears t's cover and recomputes it from the candidate occluders (covers of the triangles t replaced).
     void recover(std::int32_t t, const std::int32_t* cand, int count);
     bool coverOccluder(std::int32_t occluder, std::int64_t X3, std::int64_t Y3);
+    /// Within the grid's range, convex with positive area, and within the constraint budget.
+    bool acceptsOccluder(const GridPoint* ccw, std::size_t count) const;
+    /// Leaves the occluder clipped to the rectangle in clipB, and i0 such that clipB[0], clipB[i0]
+    /// and clipB[i0 + 1] span positive area. False when no convex polygon of positive area is left.
+    bool clipToRectangle(const GridPoint* ccw, std::size_t count, std::size_t& i0);
+    /// Records the unclipped occluder for the containment test; returns its index.
+    std::int32_t addOccluder(const GridPoint* ccw, std::size_t count, CoverKind kind, const AffineNearness& nearness);
+    /// Inserts the clipped outline; returns its first vertex (-1 when none could be inserted).
+    std::int32_t insertOutline(const std::vector<GridPoint>& poly);
 };
 } // namespace osgVis::core::cdt

@@ -75,6 +75,10 @@ struct CdtModule::Impl
     Statistics stats;
     std::uint32_t testsLeft = 0;
     bool unlimitedTests = true;
+
+    /// Clears the per-frame state for a new view (grid set already).
+    void beginFrame(const CdtOptions& options);
+    struct Frame;
 };
 
 CdtModule::CdtModule(const CdtOptions& options) : _options(options), _impl(std::make_unique<Impl>()) {}
@@ -179,6 +183,356 @@ bool facesEye(const OccluderPolygon& p, const Scene& scene, const Vec3& eye)
 }
 } // namespace
 
+void CdtModule::Impl::beginFrame(const CdtOptions& options)
+{
+    const std::int32_t limit = grid.limit();
+    record.reset(-limit, -limit, limit, limit);
+    record.setConstraintBudget(0); // budgeted here, whole occluders at a time
+    std::fill(drawn.begin(), drawn.end(), Drawn::Untested);
+    drawnKinds.assign(polygons.size(), 0);
+    waitsForTwin.assign(polygons.size(), 0);
+    unlimitedTests = options.testBudget == 0;
+    testsLeft = options.testBudget;
+}
+
+/// One call of cull: the state its phases share, and the phases. It is the traversal's visitor.
+struct CdtModule::Impl::Frame final : HierarchyVisitor
+{
+    Frame(Impl& module, const CdtOptions& cullOptions, DebugRecord* debugRecord, const Scene& frameScene,
+          const View& frameView, VisibleSet& frameVisible)
+        : m(module), options(cullOptions), debug(debugRecord), scene(frameScene), view(frameView),
+          visible(frameVisible), margin(module.grid.depthMargin()),
+          depthOnly(cullOptions.rule == CdtOptions::Rule::DepthOnly ||
+                    module.index.layout() == HierarchyLayout::Overlapping),
+          walk(module.index, frameView.eye)
+    {
+    }
+
+    Impl& m;
+    const CdtOptions& options;
+    DebugRecord* debug;
+    const Scene& scene;
+    const View& view;
+    VisibleSet& visible;
+    const double margin;
+    // Over overlapping nodes front to back orders nothing along rays: depth is all that separates.
+    const bool depthOnly;
+    HierarchyIndex::Walk walk;
+    bool stopped = false; // the test budget ran out, or the traversal strayed: nothing more is culled
+    // Per depth of the walk: the node entered there and its objects by distance (an inner node's
+    // list must outlive its children's).
+    std::vector<const HierarchyIndex::Node*> entered;
+
+    void debugNode(const Aabb& bounds, NodeState state, std::size_t depth);
+    bool allowTest();
+    bool boxHidden(const Aabb& box);
+    void drawPolygon(std::uint32_t index, cdt::CoverKind kind);
+    bool keepSharedEdges(std::uint32_t index);
+    void insertProjected(std::uint32_t index, cdt::CoverKind kind, bool waits);
+    void redrawTwinsOf(ObjectId id);
+    void drawObject(ObjectId id, const Aabb* cell);
+    void cullSubtree(const HierarchyIndex::Node& n);
+    bool enter(const HierarchyNode& node) override;
+    void leave(const HierarchyNode& node) override;
+    bool skip();
+    bool nodeCulled(const HierarchyIndex::Node& n, std::size_t depth);
+    std::vector<std::pair<double, ObjectId>>& heldObjectsByDistance(const HierarchyIndex::Node& n, std::size_t depth);
+    bool testHeldObjects(const HierarchyIndex::Node& n, const std::vector<std::pair<double, ObjectId>>& order);
+    void testObject(ObjectId id, const HierarchyIndex::Node& n);
+};
+
+void CdtModule::Impl::Frame::debugNode(const Aabb& bounds, NodeState state, std::size_t depth)
+{
+    if (debug)
+        debug->nodes.push_back({bounds, state, std::uint32_t(depth)});
+}
+
+bool CdtModule::Impl::Frame::allowTest()
+{
+    if (m.unlimitedTests)
+        return true;
+    if (m.testsLeft == 0)
+    {
+        m.stats.testBudgetReached = true;
+        return false;
+    }
+    --m.testsLeft;
+    return true;
+}
+
+// Hidden behind what the record holds (Outside the frustum counts as hidden too).
+bool CdtModule::Impl::Frame::boxHidden(const Aabb& box)
+{
+    if (view.frustum.classify(box) == Containment::Outside)
+        return true;
+    double nearestW = 0.0;
+    if (!m.grid.projectBox(box, m.outline, nearestW))
+        return false;
+
+    return m.record.hidden(m.outline.data(), m.outline.size(), cdt::QueryMode::DepthFree, nearestW + margin);
+}
+
+void CdtModule::Impl::Frame::drawPolygon(std::uint32_t index, cdt::CoverKind kind)
+{
+    const OccluderPolygon& p = m.polygons[index];
+    if (!facesEye(p, scene, view.eye))
+        return;
+    for (ObjectId part : p.parts)
+        if (part >= m.drawn.size() || m.drawn[part] != Drawn::Visible)
+            return;
+    const bool waits = keepSharedEdges(index);
+    if (!m.grid.projectOccluder(p.vertices, &m.keep, m.projected))
+        return;
+    if (kind == cdt::CoverKind::DepthOnly && !m.projected.nearness.valid)
+        return;
+    // Where cover that needs no depth already lies, another occluder adds nothing: every query
+    // there is answered hidden already (queries in this traversal all accept depth-free cover).
+    if (m.record.hidden(m.projected.points.data(), m.projected.points.size(), cdt::QueryMode::DepthFree))
+    {
+        ++m.stats.occludersAlreadyCovered;
+        return;
+    }
+    insertProjected(index, kind, waits);
+}
+
+/// Sets m.keep: per edge of the polygon, whether a drawn twin closes it. True when an edge is
+/// eroded only because its twin's object was not tested yet.
+bool CdtModule::Impl::Frame::keepSharedEdges(std::uint32_t index)
+{
+    const OccluderPolygon& p = m.polygons[index];
+    const std::size_t n = p.vertices.size();
+    m.keep.assign(n, false);
+    bool waits = false;
+    for (std::size_t e = 0; e < n; ++e)
+    {
+        // The pair draws watertight only where the twin lies across the edge on screen; one
+        // folded onto this side leaves the snapping sliver along the edge uncovered.
+        const Vec3& a = p.vertices[e];
+        const Vec3& b = p.vertices[(e + 1) % n];
+        const int mine = m.twins[index][e].empty() ? 0 : m.grid.sideOf(a, b, p.centroid);
+        for (std::uint32_t twin : m.twins[index][e])
+        {
+            if (mine == 0 || m.keep[e])
+                break;
+            const OccluderPolygon& other = m.polygons[twin];
+            if (m.grid.sideOf(a, b, other.centroid) != -mine || !facesEye(other, scene, view.eye))
+                continue;
+            bool drawnNow = other.owner < m.drawn.size() && m.drawn[other.owner] == Drawn::Visible;
+            bool untested = other.owner < m.drawn.size() && m.drawn[other.owner] == Drawn::Untested;
+            for (ObjectId part : other.parts)
+            {
+                drawnNow = drawnNow && part < m.drawn.size() && m.drawn[part] == Drawn::Visible;
+                untested = untested || (part < m.drawn.size() && m.drawn[part] == Drawn::Untested);
+            }
+            m.keep[e] = drawnNow;
+            waits = waits || (!drawnNow && untested);
+        }
+    }
+    return waits;
+}
+
+/// Inserts m.projected, the projection of polygon `index`, into the record unless it would pass
+/// the constraint budget.
+void CdtModule::Impl::Frame::insertProjected(std::uint32_t index, cdt::CoverKind kind, bool waits)
+{
+    const std::uint32_t edges = std::uint32_t(m.projected.points.size());
+    if (options.constraintBudget != 0 && m.stats.constraintEdges + edges > options.constraintBudget)
+    {
+        ++m.stats.occludersOverBudget;
+        return;
+    }
+    if (m.record.insertOccluder(m.projected.points.data(), m.projected.points.size(), kind, m.projected.nearness))
+    {
+        ++m.stats.occludersDrawn;
+        m.drawnKinds[index] |= std::uint8_t(1u << unsigned(kind));
+        m.waitsForTwin[index] = waits;
+        if (debug)
+            debug->activeOccluders.push_back(m.polygons[index].vertices);
+        m.stats.constraintEdges += edges;
+        for (bool k : m.keep)
+            m.stats.sharedEdgesKept += k ? 1u : 0u;
+    }
+}
+
+// A polygon drawn before this object was found visible eroded the edge it shares with it:
+// drawn again with the same covers, the edge now closes.
+void CdtModule::Impl::Frame::redrawTwinsOf(ObjectId id)
+{
+    for (std::uint32_t index : m.polygonsOf[id])
+        for (const std::vector<std::uint32_t>& edgeTwins : m.twins[index])
+            for (std::uint32_t twin : edgeTwins)
+                if (m.waitsForTwin[twin])
+                {
+                    m.waitsForTwin[twin] = 0;
+                    ++m.stats.redrawn;
+                    for (unsigned kind = 0; kind < 2; ++kind)
+                        if (m.drawnKinds[twin] & (1u << kind))
+                            drawPolygon(twin, cdt::CoverKind(kind));
+                }
+}
+
+// The polygons of a visible object; without depth only when they lie inside `cell` (a cell
+// every later one is behind) by more than the depth buffer resolves there, by depth otherwise:
+// a later object may touch the cell's faces, and where it touches a polygon lying on one (a
+// floor on a split plane) the two tie in depth and either may be drawn (docs/cdt.md).
+void CdtModule::Impl::Frame::drawObject(ObjectId id, const Aabb* cell)
+{
+    for (std::uint32_t index : m.polygonsOf[id])
+    {
+        const Aabb& bounds = m.polygonBounds[index];
+        bool inside = false;
+        if (cell)
+        {
+            const Vec3 far = glm::max(glm::abs(bounds.min - view.eye), glm::abs(bounds.max - view.eye));
+            // note: twice the separation along the axis covers rays up to 60 degrees off it
+            const Vec3 clearance(2.0 * m.grid.depthSeparation(glm::length(far)));
+            inside = cell->contains(bounds.min - clearance) && cell->contains(bounds.max + clearance);
+        }
+        drawPolygon(index, inside ? cdt::CoverKind::DepthFree : cdt::CoverKind::DepthOnly);
+    }
+}
+
+void CdtModule::Impl::Frame::cullSubtree(const HierarchyIndex::Node& n)
+{
+    for (std::uint32_t i = n.firstObject; i < n.subtreeEnd; ++i)
+        visible.clear(m.index.objects()[i]);
+}
+
+bool CdtModule::Impl::Frame::enter(const HierarchyNode& node)
+{
+    if (stopped)
+        return false;
+    const HierarchyIndex::Node* found = walk.enter(node);
+    if (!found)
+    {
+        m.stats.traversalStrayed = stopped = true;
+        return false;
+    }
+    const HierarchyIndex::Node& n = *found;
+    const std::size_t depth = walk.depth() - 1;
+    if (n.contents.empty())
+        return skip();
+    if (!allowTest())
+    {
+        stopped = true;
+        return skip();
+    }
+    ++m.stats.nodesVisited;
+    if (nodeCulled(n, depth))
+        return skip();
+    if (!testHeldObjects(n, heldObjectsByDistance(n, depth)))
+        return skip();
+    if (n.leaf())
+        debugNode(n.contents, NodeState::Visible, depth);
+    entered.resize(depth + 1);
+    entered[depth] = &n;
+    return true;
+}
+
+// Once the node's region is finished, its objects hide every later region without depth.
+void CdtModule::Impl::Frame::leave(const HierarchyNode&)
+{
+    const std::size_t depth = walk.depth() - 1;
+    if (!stopped && !depthOnly)
+        for (const auto& entry : m.orderScratch[depth])
+            if (m.drawn[entry.second] == Drawn::Visible)
+                drawObject(entry.second, &entered[depth]->region);
+    walk.leave();
+}
+
+/// Leaves a node entered into the walk whose children are not visited.
+bool CdtModule::Impl::Frame::skip()
+{
+    walk.leave();
+    return false;
+}
+
+/// True when the node lies outside the frustum or hidden: its whole subtree is culled.
+bool CdtModule::Impl::Frame::nodeCulled(const HierarchyIndex::Node& n, std::size_t depth)
+{
+    if (view.frustum.classify(n.contents) == Containment::Outside)
+    {
+        debugNode(n.contents, NodeState::OutsideFrustum, depth);
+        cullSubtree(n);
+        return true;
+    }
+    if (boxHidden(n.contents))
+    {
+        ++m.stats.nodesHidden;
+        debugNode(n.contents, NodeState::Invisible, depth);
+        cullSubtree(n);
+        return true;
+    }
+    return false;
+}
+
+// The objects held here, nearest first. Each is tested against the record as it stood
+// when the node was entered plus, by depth only, what nearer objects here added: objects
+// of one node are not ordered along rays, so depth is all that may separate them.
+std::vector<std::pair<double, ObjectId>>& CdtModule::Impl::Frame::heldObjectsByDistance(const HierarchyIndex::Node& n,
+                                                                                        std::size_t depth)
+{
+    if (depth >= m.orderScratch.size())
+        m.orderScratch.resize(depth + 1);
+    std::vector<std::pair<double, ObjectId>>& order = m.orderScratch[depth];
+    order.clear();
+    for (std::uint32_t i = n.firstObject; i < n.firstObject + n.heldCount; ++i)
+    {
+        const ObjectId id = m.index.objects()[i];
+        if (!visible.test(id))
+            continue;
+        const Aabb& b = scene.objects[id].bounds;
+        const Vec3 nearest = glm::clamp(view.eye, b.min, b.max);
+        order.emplace_back(glm::length(nearest - view.eye), id);
+    }
+    std::sort(order.begin(), order.end());
+    return order;
+}
+
+/// Tests the node's objects in `order`; false when the test budget ran out (the walk stops).
+bool CdtModule::Impl::Frame::testHeldObjects(const HierarchyIndex::Node& n,
+                                             const std::vector<std::pair<double, ObjectId>>& order)
+{
+    for (const auto& [distance, id] : order)
+    {
+        if (!allowTest())
+        {
+            stopped = true;
+            return false;
+        }
+        testObject(id, n);
+    }
+    return true;
+}
+
+void CdtModule::Impl::Frame::testObject(ObjectId id, const HierarchyIndex::Node& n)
+{
+    ++m.stats.objectsTested;
+    const Aabb& b = scene.objects[id].bounds;
+    if (view.frustum.classify(b) == Containment::Outside)
+    {
+        ++m.stats.outsideFrustum;
+        m.drawn[id] = Drawn::Hidden;
+        visible.clear(id);
+    }
+    else if (boxHidden(b))
+    {
+        ++m.stats.objectsHidden;
+        m.drawn[id] = Drawn::Hidden;
+        visible.clear(id);
+    }
+    else
+    {
+        m.drawn[id] = Drawn::Visible;
+        redrawTwinsOf(id);
+        // By depth at once: every object under cdt-depth; under cdt the straddling ones,
+        // which may not hide the rest of their subtree otherwise (a leaf's few objects
+        // rarely hide each other, and the leaf's cover comes a moment later anyway).
+        if (depthOnly || (options.rule == CdtOptions::Rule::Combined && !n.leaf()))
+            drawObject(id, nullptr);
+    }
+}
+
 void CdtModule::cull(const View& view, VisibleSet& visible)
 {
     Impl& m = *_impl;
@@ -186,260 +540,16 @@ void CdtModule::cull(const View& view, VisibleSet& visible)
     m.stats = {};
     if (!_scene || !m.hierarchy || m.index.objects().empty() || !m.grid.set(view, _options.tolerancePixels))
         return;
-    const Scene& scene = *_scene;
     m.view = view;
     if (_debug)
         _debug->clear();
-    auto debugNode = [&](const Aabb& bounds, NodeState state, std::size_t depth) {
-        if (_debug)
-            _debug->nodes.push_back({bounds, state, std::uint32_t(depth)});
-    };
-    const std::int32_t limit = m.grid.limit();
-    m.record.reset(-limit, -limit, limit, limit);
-    m.record.setConstraintBudget(0); // budgeted here, whole occluders at a time
-    std::fill(m.drawn.begin(), m.drawn.end(), Drawn::Untested);
-    m.drawnKinds.assign(m.polygons.size(), 0);
-    m.waitsForTwin.assign(m.polygons.size(), 0);
-    m.unlimitedTests = _options.testBudget == 0;
-    m.testsLeft = _options.testBudget;
-    const double margin = m.grid.depthMargin();
-
-    auto allowTest = [&]() {
-        if (m.unlimitedTests)
-            return true;
-        if (m.testsLeft == 0)
-        {
-            m.stats.testBudgetReached = true;
-            return false;
-        }
-        --m.testsLeft;
-        return true;
-    };
-    // Hidden behind what the record holds (Outside the frustum counts as hidden too).
-    auto boxHidden = [&](const Aabb& box) {
-        if (view.frustum.classify(box) == Containment::Outside)
-            return true;
-        double nearestW = 0.0;
-        if (!m.grid.projectBox(box, m.outline, nearestW))
-            return false;
-
-        return m.record.hidden(m.outline.data(), m.outline.size(), cdt::QueryMode::DepthFree, nearestW + margin);
-    };
-    auto drawPolygon = [&](std::uint32_t index, cdt::CoverKind kind) {
-        const OccluderPolygon& p = m.polygons[index];
-        if (!facesEye(p, scene, view.eye))
-            return;
-        for (ObjectId part : p.parts)
-            if (part >= m.drawn.size() || m.drawn[part] != Drawn::Visible)
-                return;
-        const std::size_t n = p.vertices.size();
-        m.keep.assign(n, false);
-        bool waits = false;
-        for (std::size_t e = 0; e < n; ++e)
-        {
-            // The pair draws watertight only where the twin lies across the edge on screen; one
-            // folded onto this side leaves the snapping sliver along the edge uncovered.
-            const Vec3& a = p.vertices[e];
-            const Vec3& b = p.vertices[(e + 1) % n];
-            const int mine = m.twins[index][e].empty() ? 0 : m.grid.sideOf(a, b, p.centroid);
-            for (std::uint32_t twin : m.twins[index][e])
-            {
-                if (mine == 0 || m.keep[e])
-                    break;
-                const OccluderPolygon& other = m.polygons[twin];
-                if (m.grid.sideOf(a, b, other.centroid) != -mine || !facesEye(other, scene, view.eye))
-                    continue;
-                bool drawnNow = other.owner < m.drawn.size() && m.drawn[other.owner] == Drawn::Visible;
-                bool untested = other.owner < m.drawn.size() && m.drawn[other.owner] == Drawn::Untested;
-                for (ObjectId part : other.parts)
-                {
-                    drawnNow = drawnNow && part < m.drawn.size() && m.drawn[part] == Drawn::Visible;
-                    untested = untested || (part < m.drawn.size() && m.drawn[part] == Drawn::Untested);
-                }
-                m.keep[e] = drawnNow;
-                waits = waits || (!drawnNow && untested);
-            }
-        }
-        if (!m.grid.projectOccluder(p.vertices, &m.keep, m.projected))
-            return;
-        if (kind == cdt::CoverKind::DepthOnly && !m.projected.nearness.valid)
-            return;
-        // Where cover that needs no depth already lies, another occluder adds nothing: every query
-        // there is answered hidden already (queries in this traversal all accept depth-free cover).
-        if (m.record.hidden(m.projected.points.data(), m.projected.points.size(), cdt::QueryMode::DepthFree))
-        {
-            ++m.stats.occludersAlreadyCovered;
-            return;
-        }
-        const std::uint32_t edges = std::uint32_t(m.projected.points.size());
-        if (_options.constraintBudget != 0 && m.stats.constraintEdges + edges > _options.constraintBudget)
-        {
-            ++m.stats.occludersOverBudget;
-            return;
-        }
-        if (m.record.insertOccluder(m.projected.points.data(), m.projected.points.size(), kind, m.projected.nearness))
-        {
-            ++m.stats.occludersDrawn;
-            m.drawnKinds[index] |= std::uint8_t(1u << unsigned(kind));
-            m.waitsForTwin[index] = waits;
-            if (_debug)
-                _debug->activeOccluders.push_back(p.vertices);
-            m.stats.constraintEdges += edges;
-            for (bool k : m.keep)
-                m.stats.sharedEdgesKept += k ? 1u : 0u;
-        }
-    };
-    // A polygon drawn before this object was found visible eroded the edge it shares with it:
-    // drawn again with the same covers, the edge now closes.
-    auto redrawTwinsOf = [&](ObjectId id) {
-        for (std::uint32_t index : m.polygonsOf[id])
-            for (const std::vector<std::uint32_t>& edgeTwins : m.twins[index])
-                for (std::uint32_t twin : edgeTwins)
-                    if (m.waitsForTwin[twin])
-                    {
-                        m.waitsForTwin[twin] = 0;
-                        ++m.stats.redrawn;
-                        for (unsigned kind = 0; kind < 2; ++kind)
-                            if (m.drawnKinds[twin] & (1u << kind))
-                                drawPolygon(twin, cdt::CoverKind(kind));
-                    }
-    };
-    // The polygons of a visible object; without depth only when they lie inside `cell` (a cell
-    // every later one is behind) by more than the depth buffer resolves there, by depth otherwise:
-    // a later object may touch the cell's faces, and where it touches a polygon lying on one (a
-    // floor on a split plane) the two tie in depth and either may be drawn (docs/cdt.md).
-    auto drawObject = [&](ObjectId id, const Aabb* cell) {
-        for (std::uint32_t index : m.polygonsOf[id])
-        {
-            const Aabb& bounds = m.polygonBounds[index];
-            bool inside = false;
-            if (cell)
-            {
-                const Vec3 far = glm::max(glm::abs(bounds.min - view.eye), glm::abs(bounds.max - view.eye));
-                // note: twice the separation along the axis covers rays up to 60 degrees off it
-                const Vec3 clearance(2.0 * m.grid.depthSeparation(glm::length(far)));
-                inside = cell->contains(bounds.min - clearance) && cell->contains(bounds.max + clearance);
-            }
-            drawPolygon(index, inside ? cdt::CoverKind::DepthFree : cdt::CoverKind::DepthOnly);
-        }
-    };
-    auto cullSubtree = [&](const HierarchyIndex::Node& n) {
-        for (std::uint32_t i = n.firstObject; i < n.subtreeEnd; ++i)
-            visible.clear(m.index.objects()[i]);
-    };
-    // Over overlapping nodes front to back orders nothing along rays: depth is all that separates.
-    const bool depthOnly = _options.rule == CdtOptions::Rule::DepthOnly || m.index.layout() == HierarchyLayout::Overlapping;
+    m.beginFrame(_options);
+    Impl::Frame frame(m, _options, _debug, *_scene, view, visible);
     for (std::uint32_t index : m.statedPolygons)
-        drawPolygon(index, cdt::CoverKind::DepthOnly);
+        frame.drawPolygon(index, cdt::CoverKind::DepthOnly);
 
-    HierarchyIndex::Walk walk(m.index, view.eye);
-    bool stopped = false; // the test budget ran out, or the traversal strayed: nothing more is culled
     const VisibleSet candidates = visible;
-    // Per depth of the walk: the node entered there and its objects by distance (an inner node's
-    // list must outlive its children's).
-    std::vector<const HierarchyIndex::Node*> entered;
-    auto enter = [&](const HierarchyNode& node) -> bool {
-        if (stopped)
-            return false;
-        const HierarchyIndex::Node* found = walk.enter(node);
-        if (!found)
-        {
-            m.stats.traversalStrayed = stopped = true;
-            return false;
-        }
-        const HierarchyIndex::Node& n = *found;
-        const std::size_t depth = walk.depth() - 1;
-        auto skip = [&]() {
-            walk.leave();
-            return false;
-        };
-        if (n.contents.empty())
-            return skip();
-        if (!allowTest())
-        {
-            stopped = true;
-            return skip();
-        }
-        ++m.stats.nodesVisited;
-        if (view.frustum.classify(n.contents) == Containment::Outside)
-        {
-            debugNode(n.contents, NodeState::OutsideFrustum, depth);
-            cullSubtree(n);
-            return skip();
-        }
-        if (boxHidden(n.contents))
-        {
-            ++m.stats.nodesHidden;
-            debugNode(n.contents, NodeState::Invisible, depth);
-            cullSubtree(n);
-            return skip();
-        }
-        // The objects held here, nearest first. Each is tested against the record as it stood
-        // when the node was entered plus, by depth only, what nearer objects here added: objects
-        // of one node are not ordered along rays, so depth is all that may separate them.
-        if (depth >= m.orderScratch.size())
-            m.orderScratch.resize(depth + 1);
-        std::vector<std::pair<double, ObjectId>>& order = m.orderScratch[depth];
-        order.clear();
-        for (std::uint32_t i = n.firstObject; i < n.firstObject + n.heldCount; ++i)
-        {
-            const ObjectId id = m.index.objects()[i];
-            if (!visible.test(id))
-                continue;
-            const Aabb& b = scene.objects[id].bounds;
-            const Vec3 nearest = glm::clamp(view.eye, b.min, b.max);
-            order.emplace_back(glm::length(nearest - view.eye), id);
-        }
-        std::sort(order.begin(), order.end());
-        for (const auto& [distance, id] : order)
-        {
-            if (!allowTest())
-            {
-                stopped = true;
-                return skip();
-            }
-            ++m.stats.objectsTested;
-            const Aabb& b = scene.objects[id].bounds;
-            if (view.frustum.classify(b) == Containment::Outside)
-            {
-                ++m.stats.outsideFrustum;
-                m.drawn[id] = Drawn::Hidden;
-                visible.clear(id);
-            }
-            else if (boxHidden(b))
-            {
-                ++m.stats.objectsHidden;
-                m.drawn[id] = Drawn::Hidden;
-                visible.clear(id);
-            }
-            else
-            {
-                m.drawn[id] = Drawn::Visible;
-                redrawTwinsOf(id);
-                // By depth at once: every object under cdt-depth; under cdt the straddling ones,
-                // which may not hide the rest of their subtree otherwise (a leaf's few objects
-                // rarely hide each other, and the leaf's cover comes a moment later anyway).
-                if (depthOnly || (_options.rule == CdtOptions::Rule::Combined && !n.leaf()))
-                    drawObject(id, nullptr);
-            }
-        }
-        if (n.leaf())
-            debugNode(n.contents, NodeState::Visible, depth);
-        entered.resize(depth + 1);
-        entered[depth] = &n;
-        return true;
-    };
-    // Once the node's region is finished, its objects hide every later region without depth.
-    auto leave = [&](const HierarchyNode&) {
-        const std::size_t depth = walk.depth() - 1;
-        if (!stopped && !depthOnly)
-            for (const auto& entry : m.orderScratch[depth])
-                if (m.drawn[entry.second] == Drawn::Visible)
-                    drawObject(entry.second, &entered[depth]->region);
-        walk.leave();
-    };
-    LambdaVisitor<decltype(enter), decltype(leave)> visitor(enter, leave);
-    m.hierarchy->traverse(view.eye, visitor);
+    m.hierarchy->traverse(view.eye, frame);
     if (m.stats.traversalStrayed)
         visible = candidates;
     m.stats.triangles = m.record.statistics().triangles;

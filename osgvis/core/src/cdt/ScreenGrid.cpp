@@ -183,32 +183,34 @@ bool ScreenGrid::projectBox(const Aabb& box, std::vector<cdt::GridPoint>& outlin
     return outline.size() >= 3;
 }
 
-bool ScreenGrid::projectOccluder(const std::vector<Vec3>& vertices, const std::vector<bool>* keepEdge, GridPolygon& out) const
+namespace
+{
+/// A clip-space vertex with the label of the edge that starts at it (as in Labelled).
+struct ClipVertex
+{
+    Vec4 c;
+    std::uint32_t edge;
+};
+
+// Clip space, clipped to the near plane and the guard band (|x|, |y| <= 2w). An edge keeps its
+// label only while both its ends survive: a clipped edge ends where its twin's may not.
+bool clipToGuardBand(const Mat4& worldToClip, const std::vector<Vec3>& vertices, const std::vector<bool>* keepEdge,
+                     std::vector<ClipVertex>& poly)
 {
     const std::size_t count = vertices.size();
-    if (count < 3)
-        return false;
-    // Clip space, clipped to the near plane and the guard band (|x|, |y| <= 2w). An edge keeps its
-    // label only while both its ends survive: a clipped edge ends where its twin's may not.
-    struct Clip
-    {
-        Vec4 c;
-        std::uint32_t edge;
-    };
-    std::vector<Clip> poly;
     poly.reserve(count + 5);
     for (std::size_t i = 0; i < count; ++i)
-        poly.push_back({_worldToClip * Vec4(vertices[i], 1.0),
+        poly.push_back({worldToClip * Vec4(vertices[i], 1.0),
                         keepEdge && i < keepEdge->size() && (*keepEdge)[i] ? std::uint32_t(i) : NotKept});
     const Vec4 planes[5] = {{0, 0, 1, 1}, {-1, 0, 0, 2}, {1, 0, 0, 2}, {0, -1, 0, 2}, {0, 1, 0, 2}};
     for (const Vec4& plane : planes)
     {
-        std::vector<Clip> next;
+        std::vector<ClipVertex> next;
         next.reserve(poly.size() + 1);
         for (std::size_t i = 0; i < poly.size(); ++i)
         {
-            const Clip& a = poly[i];
-            const Clip& b = poly[(i + 1) % poly.size()];
+            const ClipVertex& a = poly[i];
+            const ClipVertex& b = poly[(i + 1) % poly.size()];
             const double da = glm::dot(plane, a.c), db = glm::dot(plane, b.c);
             if (da >= 0.0)
                 next.push_back({a.c, db >= 0.0 ? a.edge : NotKept});
@@ -219,14 +221,36 @@ bool ScreenGrid::projectOccluder(const std::vector<Vec3>& vertices, const std::v
         if (poly.size() < 3)
             return false;
     }
-    std::vector<Labelled> screen;
-    std::vector<double> nearness;
-    for (const Clip& v : poly)
+    return true;
+}
+
+void reverseOrientation(std::vector<Labelled>& screen, std::vector<double>& nearness)
+{
+    // Reverse; the edge starting at vertex j of the reversed list is the old edge ending there.
+    std::vector<Labelled> reversed(screen.size());
+    std::vector<double> w(screen.size());
+    for (std::size_t j = 0; j < screen.size(); ++j)
+    {
+        const std::size_t from = screen.size() - 1 - j;
+        const std::size_t to = (from + screen.size() - 1) % screen.size();
+        reversed[j] = {screen[from].p, screen[to].edge};
+        w[j] = nearness[from];
+    }
+    screen.swap(reversed);
+    nearness.swap(w);
+}
+
+/// The clipped polygon in grid units, counter-clockwise, and each vertex's nearness. False when a
+/// vertex is not in front of the eye or the area is one square grid unit or less.
+bool projectCounterClockwise(const std::vector<ClipVertex>& poly, double scaleX, double scaleY, bool orthographic,
+                             std::vector<Labelled>& screen, std::vector<double>& nearness)
+{
+    for (const ClipVertex& v : poly)
     {
         if (!(v.c.w > 0.0))
             return false;
-        screen.push_back({{v.c.x / v.c.w * _scaleX, v.c.y / v.c.w * _scaleY}, v.edge});
-        nearness.push_back(_orthographic ? -v.c.z : 1.0 / v.c.w);
+        screen.push_back({{v.c.x / v.c.w * scaleX, v.c.y / v.c.w * scaleY}, v.edge});
+        nearness.push_back(orthographic ? -v.c.z : 1.0 / v.c.w);
     }
     double area = 0.0;
     for (std::size_t i = 0; i < screen.size(); ++i)
@@ -234,54 +258,36 @@ bool ScreenGrid::projectOccluder(const std::vector<Vec3>& vertices, const std::v
     if (!(std::abs(area) > 1.0))
         return false;
     if (area < 0.0)
-    {
-        // Reverse; the edge starting at vertex j of the reversed list is the old edge ending there.
-        std::vector<Labelled> reversed(screen.size());
-        std::vector<double> w(screen.size());
-        for (std::size_t j = 0; j < screen.size(); ++j)
+        reverseOrientation(screen, nearness);
+    return true;
+}
+
+// Nearness is affine over the screen for a planar polygon: fit it on the largest triangle.
+cdt::AffineNearness fitNearness(const std::vector<Labelled>& screen, const std::vector<double>& nearness)
+{
+    std::size_t bi = 0, bj = 1, bk = 2;
+    double best = 0.0;
+    const std::size_t n = screen.size();
+    for (std::size_t j = 1; j + 1 < n; ++j)
+        for (std::size_t k = j + 1; k < n; ++k)
         {
-            const std::size_t from = screen.size() - 1 - j;
-            const std::size_t to = (from + screen.size() - 1) % screen.size();
-            reversed[j] = {screen[from].p, screen[to].edge};
-            w[j] = nearness[from];
+            const double a = std::abs(cross(screen[0].p, screen[j].p, screen[k].p));
+            if (a > best)
+                best = a, bj = j, bk = k;
         }
-        screen.swap(reversed);
-        nearness.swap(w);
-    }
+    const dvec2 p0 = screen[bi].p, p1 = screen[bj].p, p2 = screen[bk].p;
+    const double det = cross(p0, p1, p2);
+    if (!(std::abs(det) > 0.0))
+        return {};
+    const double w0 = nearness[bi], w1 = nearness[bj], w2 = nearness[bk];
+    const double a = ((w1 - w0) * (p2.y - p0.y) - (w2 - w0) * (p1.y - p0.y)) / det;
+    const double b = ((w2 - w0) * (p1.x - p0.x) - (w1 - w0) * (p2.x - p0.x)) / det;
+    return {a, b, w0 - a * p0.x - b * p0.y, std::isfinite(a) && std::isfinite(b)};
+}
 
-    // Nearness is affine over the screen for a planar polygon: fit it on the largest triangle.
-    {
-        std::size_t bi = 0, bj = 1, bk = 2;
-        double best = 0.0;
-        const std::size_t n = screen.size();
-        for (std::size_t j = 1; j + 1 < n; ++j)
-            for (std::size_t k = j + 1; k < n; ++k)
-            {
-                const double a = std::abs(cross(screen[0].p, screen[j].p, screen[k].p));
-                if (a > best)
-                    best = a, bj = j, bk = k;
-            }
-        const dvec2 p0 = screen[bi].p, p1 = screen[bj].p, p2 = screen[bk].p;
-        const double det = cross(p0, p1, p2);
-        out.nearness = {};
-        if (std::abs(det) > 0.0)
-        {
-            const double w0 = nearness[bi], w1 = nearness[bj], w2 = nearness[bk];
-            const double a = ((w1 - w0) * (p2.y - p0.y) - (w2 - w0) * (p1.y - p0.y)) / det;
-            const double b = ((w2 - w0) * (p1.x - p0.x) - (w1 - w0) * (p2.x - p0.x)) / det;
-            out.nearness = {a, b, w0 - a * p0.x - b * p0.y, std::isfinite(a) && std::isfinite(b)};
-        }
-    }
-
-    // The lattice segments of kept edges, from the unclipped vertices (the twin computes the same).
-    auto latticePoint = [&](const Vec3& world) {
-        const Vec4 c = _worldToClip * Vec4(world, 1.0);
-        const dvec2 p(c.x / c.w * _scaleX, c.y / c.w * _scaleY);
-        return cdt::GridPoint{std::int32_t(std::llround(p.x / _lattice) * std::int64_t(_lattice)),
-                              std::int32_t(std::llround(p.y / _lattice) * std::int64_t(_lattice))};
-    };
-
-    // Erode every edge that is not kept by τ: clip by the half-planes τ inside them.
+// Erode every edge that is not kept by τ: clip by the half-planes τ inside them.
+bool erodeUnkeptEdges(std::vector<Labelled>& screen, double tolerance)
+{
     const std::vector<Labelled> original = screen;
     for (std::size_t i = 0; i < original.size(); ++i)
     {
@@ -292,70 +298,116 @@ bool ScreenGrid::projectOccluder(const std::vector<Vec3>& vertices, const std::v
         const double len = glm::length(d);
         if (!(len > 0.0))
             continue;
-        clipHalfPlane(screen, a, dvec2(-d.y, d.x) / len, _tolerance);
+        clipHalfPlane(screen, a, dvec2(-d.y, d.x) / len, tolerance);
         if (screen.size() < 3)
             return false;
     }
+    return true;
+}
 
-    // Round: a vertex on a kept edge moves along that edge's integer segment, inwards, to a grid
-    // point of it; every other vertex to the nearest grid point (τ leaves room for that).
-    auto place = [&](std::size_t index, bool& ok) -> cdt::GridPoint {
-        const std::size_t n = screen.size();
-        const Labelled& v = screen[index];
-        const Labelled& before = screen[(index + n - 1) % n];
-        if (v.edge == NotKept && before.edge == NotKept)
-            return roundPoint(v.p);
-        if (v.edge != NotKept && before.edge != NotKept)
-        {
-            // Between two kept edges: their common original vertex, the same in every polygon.
-            const std::uint32_t e1 = before.edge, e2 = v.edge;
-            const std::uint32_t common = (e1 == e2 || e1 == (e2 + 1) % count) ? e1 : (e1 + 1) % count;
-            return latticePoint(vertices[common]);
-        }
-        // On one kept edge: its end is the other end of this piece of it.
-        const bool starts = v.edge != NotKept;
-        const std::uint32_t edge = starts ? v.edge : before.edge;
-        const dvec2 other = starts ? screen[(index + 1) % n].p : before.p;
-        const cdt::GridPoint a = latticePoint(vertices[edge]);
-        const cdt::GridPoint b = latticePoint(vertices[(edge + 1) % count]);
-        const std::int64_t dx = std::int64_t(b.x) - a.x, dy = std::int64_t(b.y) - a.y;
-        const std::int64_t g = std::gcd(std::llabs(dx), std::llabs(dy));
-        if (g == 0)
-        {
-            ok = false;
-            return a;
-        }
-        const double length2 = double(dx) * double(dx) + double(dy) * double(dy);
-        auto parameter = [&](const dvec2& p) {
-            return std::clamp(((p.x - a.x) * double(dx) + (p.y - a.y) * double(dy)) / length2, 0.0, 1.0);
-        };
-        const double t = parameter(v.p);
-        // Inwards: towards the piece's other end, so the piece only gets shorter.
-        const std::int64_t step = parameter(other) > t ? std::int64_t(std::ceil(t * double(g)))
-                                                       : std::int64_t(std::floor(t * double(g)));
-        const std::int64_t s = std::clamp<std::int64_t>(step, 0, g);
-        return {std::int32_t(a.x + dx / g * s), std::int32_t(a.y + dy / g * s)};
+/// The grid's mapping of world points to the lattice.
+struct Lattice
+{
+    const Mat4& worldToClip;
+    double scaleX, scaleY, step;
+
+    // The lattice segments of kept edges, from the unclipped vertices (the twin computes the same).
+    cdt::GridPoint point(const Vec3& world) const
+    {
+        const Vec4 c = worldToClip * Vec4(world, 1.0);
+        const dvec2 p(c.x / c.w * scaleX, c.y / c.w * scaleY);
+        return cdt::GridPoint{std::int32_t(std::llround(p.x / step) * std::int64_t(step)),
+                              std::int32_t(std::llround(p.y / step) * std::int64_t(step))};
+    }
+};
+
+// Round: a vertex on a kept edge moves along that edge's integer segment, inwards, to a grid
+// point of it; every other vertex to the nearest grid point (τ leaves room for that).
+cdt::GridPoint placeVertex(const std::vector<Labelled>& screen, std::size_t index, const std::vector<Vec3>& vertices,
+                           const Lattice& lattice, bool& ok)
+{
+    const std::size_t count = vertices.size();
+    const std::size_t n = screen.size();
+    const Labelled& v = screen[index];
+    const Labelled& before = screen[(index + n - 1) % n];
+    if (v.edge == NotKept && before.edge == NotKept)
+        return roundPoint(v.p);
+    if (v.edge != NotKept && before.edge != NotKept)
+    {
+        // Between two kept edges: their common original vertex, the same in every polygon.
+        const std::uint32_t e1 = before.edge, e2 = v.edge;
+        const std::uint32_t common = (e1 == e2 || e1 == (e2 + 1) % count) ? e1 : (e1 + 1) % count;
+        return lattice.point(vertices[common]);
+    }
+    // On one kept edge: its end is the other end of this piece of it.
+    const bool starts = v.edge != NotKept;
+    const std::uint32_t edge = starts ? v.edge : before.edge;
+    const dvec2 other = starts ? screen[(index + 1) % n].p : before.p;
+    const cdt::GridPoint a = lattice.point(vertices[edge]);
+    const cdt::GridPoint b = lattice.point(vertices[(edge + 1) % count]);
+    const std::int64_t dx = std::int64_t(b.x) - a.x, dy = std::int64_t(b.y) - a.y;
+    const std::int64_t g = std::gcd(std::llabs(dx), std::llabs(dy));
+    if (g == 0)
+    {
+        ok = false;
+        return a;
+    }
+    const double length2 = double(dx) * double(dx) + double(dy) * double(dy);
+    auto parameter = [&](const dvec2& p) {
+        return std::clamp(((p.x - a.x) * double(dx) + (p.y - a.y) * double(dy)) / length2, 0.0, 1.0);
     };
+    const double t = parameter(v.p);
+    // Inwards: towards the piece's other end, so the piece only gets shorter.
+    const std::int64_t step = parameter(other) > t ? std::int64_t(std::ceil(t * double(g)))
+                                                   : std::int64_t(std::floor(t * double(g)));
+    const std::int64_t s = std::clamp<std::int64_t>(step, 0, g);
+    return {std::int32_t(a.x + dx / g * s), std::int32_t(a.y + dy / g * s)};
+}
+
+/// Drops the vertices where the outline runs straight on (or doubles back onto itself); false at
+/// a turn the wrong way.
+bool dropStraightVertices(std::vector<cdt::GridPoint>& points)
+{
+    for (std::size_t i = 0; points.size() >= 3 && i < points.size();)
+    {
+        const std::size_t n = points.size();
+        const std::int64_t turn = cross(points[(i + n - 1) % n], points[i], points[(i + 1) % n]);
+        if (turn < 0)
+            return false;
+        if (turn == 0)
+            points.erase(points.begin() + std::ptrdiff_t(i));
+        else
+            ++i;
+    }
+    return true;
+}
+} // namespace
+
+bool ScreenGrid::projectOccluder(const std::vector<Vec3>& vertices, const std::vector<bool>* keepEdge, GridPolygon& out) const
+{
+    if (vertices.size() < 3)
+        return false;
+    std::vector<ClipVertex> poly;
+    if (!clipToGuardBand(_worldToClip, vertices, keepEdge, poly))
+        return false;
+    std::vector<Labelled> screen;
+    std::vector<double> nearness;
+    if (!projectCounterClockwise(poly, _scaleX, _scaleY, _orthographic, screen, nearness))
+        return false;
+    out.nearness = fitNearness(screen, nearness);
+    if (!erodeUnkeptEdges(screen, _tolerance))
+        return false;
+
+    const Lattice lattice{_worldToClip, _scaleX, _scaleY, _lattice};
     bool ok = true;
     out.points.clear();
     for (std::size_t i = 0; i < screen.size(); ++i)
-        out.points.push_back(place(i, ok));
+        out.points.push_back(placeVertex(screen, i, vertices, lattice, ok));
     // Strictly convex, counter-clockwise, and every kept edge still of positive length; otherwise
     // fall back to eroding everything (the hull of points that all lie τ - 1 inside is safe).
     // Straight-line vertices (kept where the neighbour across an edge changes) and points that
     // rounding made coincide or collinear go; a turn the wrong way means rounding broke convexity.
-    for (std::size_t i = 0; ok && out.points.size() >= 3 && i < out.points.size();)
-    {
-        const std::size_t n = out.points.size();
-        const std::int64_t turn = cross(out.points[(i + n - 1) % n], out.points[i], out.points[(i + 1) % n]);
-        if (turn < 0)
-            ok = false;
-        else if (turn == 0)
-            out.points.erase(out.points.begin() + std::ptrdiff_t(i));
-        else
-            ++i;
-    }
-    if (ok && out.points.size() >= 3)
+    if (ok && dropStraightVertices(out.points) && out.points.size() >= 3)
         return true;
     if (!keepEdge)
         return false;

@@ -109,6 +109,31 @@ void appendObjectPolygons(const Scene& scene, const std::vector<ObjectId>& ids, 
         polygons.push_back(std::move(polygon));
     }
 }
+
+// The mask's size and margins for a view, in mask pixels.
+struct MaskLayout
+{
+    std::uint32_t width = 0, height = 0;
+    double shift = 0.0; // Δ
+    std::uint32_t border = 0;
+    double clipMargin = 0.0;
+};
+
+MaskLayout maskLayoutFor(const View& view, const MaskOptions& options)
+{
+    MaskLayout layout;
+    const double maskScale = double(options.maskDownscale == 0 ? 1 : options.maskDownscale);
+    layout.width = std::max<std::uint32_t>(16, std::uint32_t(std::ceil(view.viewportWidth / maskScale)));
+    layout.height = std::max<std::uint32_t>(16, std::uint32_t(std::ceil(view.viewportHeight / maskScale)));
+    // Δ in mask pixels: the largest image shift allowed for points at the occluders' depth.
+    layout.shift = options.shrinkPixels * double(layout.width) / std::max(1u, view.viewportWidth);
+    // A border around the frame holds what an eye δ away may see at the frame's edges; occluders
+    // are clipped farther out still, so their outline cannot sweep in from beyond what was
+    // rasterized.
+    layout.border = static_cast<std::uint32_t>(std::ceil(layout.shift)) + 1;
+    layout.clipMargin = layout.border + 2.0 * layout.shift + 2.0;
+    return layout;
+}
 } // namespace
 
 struct MaskModule::Impl
@@ -435,206 +460,10 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
         return;
     if (m.debug)
         m.debug->clear();
-    const double t = view.time;
-    const Vec3 eye = view.eye;
 
-    // Stamps are sound only while the eye stays inside the ball of the critical frame that wrote
-    // them; the speed bound V guarantees that, but an eye faster than V (or time running
-    // backwards) must not trust them.
-    const double speed = _options.maxEyeSpeed;
-    while (!m.alive.empty() && t >= m.alive.front().time + m.alive.front().deltaMax / speed)
-        m.alive.popFront();
-    CriticalReason reason = CriticalReason::None;
-    bool trusted = true;
-    for (const Impl::CriticalFrame& frame : m.alive)
-    {
-        // Each stamp t_k + δ/V holds while the eye is within its δ of the critical eye: surely so
-        // inside the smallest δ, and otherwise as long as the eye kept to the speed V.
-        const double moved = glm::length(eye - frame.eye);
-        trusted = trusted && t >= frame.time &&
-                  (moved <= frame.deltaMin || moved <= speed * (t - frame.time) * (1.0 - 1e-12));
-    }
-    if (!trusted)
-    {
-        m.forgetMarks();
-        reason = CriticalReason::LeftRegion;
-    }
-    if (reason == CriticalReason::None)
-    {
-        if (m.occluderGone)
-            reason = CriticalReason::OccluderGone;
-        else if (!m.haveMask)
-            reason = CriticalReason::First;
-        else if (!sameProjection(view, m.criticalView))
-        {
-            // The near plane decides which occluder parts are drawn at all.
-            m.forgetMarks();
-            reason = CriticalReason::ViewChanged;
-        }
-        else if (!sameOrientation(view, m.criticalView))
-        {
-            // Marks cover the critical frame (grown by Δ) only: objects partly outside it were
-            // judged by their part inside. Checked before expiry: a turn must forget the marks
-            // whatever else is due.
-            m.forgetMarks();
-            reason = CriticalReason::Turned;
-        }
-        else if (t >= m.criticalAfter)
-            reason = CriticalReason::StampExpired;
-    }
-    m.occluderGone = false;
-
-    const double maskScale = double(_options.maskDownscale == 0 ? 1 : _options.maskDownscale);
-    const std::uint32_t maskWidth = std::max<std::uint32_t>(16, std::uint32_t(std::ceil(view.viewportWidth / maskScale)));
-    const std::uint32_t maskHeight = std::max<std::uint32_t>(16, std::uint32_t(std::ceil(view.viewportHeight / maskScale)));
-    // Δ in mask pixels: the largest image shift allowed for points at the occluders' depth.
-    const double shift = _options.shrinkPixels * double(maskWidth) / std::max(1u, view.viewportWidth);
-    // A border around the frame holds what an eye δ away may see at the frame's edges; occluders
-    // are clipped farther out still, so their outline cannot sweep in from beyond what was
-    // rasterized.
-    const std::uint32_t border = static_cast<std::uint32_t>(std::ceil(shift)) + 1;
-    const double clipMargin = border + 2.0 * shift + 2.0;
-
-    if (reason != CriticalReason::None)
-    {
-        if (!m.projection.set(view, maskWidth, maskHeight, border, clipMargin))
-        {
-            // Orthographic or unusual projections: no occlusion from this module.
-            m.forgetMarks();
-            return;
-        }
-        stats.critical = reason;
-        Clock::time_point start = Clock::now();
-        const double nearDepth = std::max(_options.minOccluderDistance, 2.0 * m.projection.nearPlane());
-        MaskSelectionInput input;
-        input.tree = &m.tree;
-        input.hierarchy = m.sceneHierarchy ? &m.index : nullptr;
-        input.objects = &_scene->objects;
-        input.usable = &m.usable;
-        input.view = &view;
-        input.projection = &m.projection;
-        input.eye = eye;
-        input.minDistance = _options.minOccluderDistance;
-        input.sampleRadius = m.delta;
-        input.count = _options.occluders;
-        input.measure = _options.measure;
-        std::vector<ObjectId>& occluders = m.occluders;
-        selectMaskOccluders(input, m.selection, occluders);
-        std::vector<std::uint32_t>& selected = m.selected;
-        selected.assign(m.statedPolygons.begin(), m.statedPolygons.end());
-        // A union of several objects' faces serves while every one of them stands still, and the
-        // marks rest on all of them (removing or moving any forgets the marks).
-        std::vector<ObjectId>& restingOn = m.restingOn;
-        restingOn.assign(occluders.begin(), occluders.end());
-        ++m.criticalCount;
-        for (ObjectId id : occluders)
-            for (std::uint32_t p : m.polygonsOf[id])
-            {
-                if (m.selectedIn[p] == m.criticalCount)
-                    continue;
-                const std::vector<ObjectId>& parts = m.polygons[p].parts;
-                if (!std::all_of(parts.begin(), parts.end(),
-                                 [&](ObjectId part) { return part < m.present.size() && m.present[part] && !m.moving[part]; }))
-                    continue;
-                m.selectedIn[p] = m.criticalCount;
-                selected.push_back(p);
-                restingOn.insert(restingOn.end(), parts.begin(), parts.end());
-            }
-        std::sort(restingOn.begin(), restingOn.end());
-        restingOn.erase(std::unique(restingOn.begin(), restingOn.end()), restingOn.end());
-        keepLargestPolygons(m.polygons, eye, _options.maxOccluderPolygons, selected, m.rankedPolygons);
-        stats.selectMs = millisecondsSince(start);
-
-        start = Clock::now();
-        buildMaskGroups(m.polygons, selected, m.projection, nearDepth, shift, m.groups);
-        fillTileDeltas(shift);
-        m.mask.reset(m.projection.width(), m.projection.height());
-        const bool perOccluder = _options.shrink == MaskShrink::PerOccluder;
-        // A group left out only hides less (its δ still bounds the tiles it reaches: smaller is safe).
-        const std::uint64_t budget =
-            _options.workBudget == 0 ? std::numeric_limits<std::uint64_t>::max() : _options.workBudget;
-        const std::uint64_t rasterBudget = budget == std::numeric_limits<std::uint64_t>::max() ? budget : budget / 5 * 3;
-        // Largest groups first (most tiles: they hide the most), ties by index: deterministic.
-        std::vector<std::uint32_t>& order = m.groupOrder;
-        order.resize(m.groups.groupCount());
-        for (std::uint32_t g = 0; g < order.size(); ++g)
-            order[g] = g;
-        if (_options.workBudget != 0)
-            std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-                const std::uint64_t wa = m.groups.groupWork[a], wb = m.groups.groupWork[b];
-                return wa > wb || (wa == wb && a < b);
-            });
-        for (const std::uint32_t g : order)
-        {
-            if (m.groups.groupWork[g] > rasterBudget - stats.rasterWork)
-            {
-                ++stats.groupsSkipped;
-                stats.overBudget = true;
-                continue;
-            }
-            stats.rasterWork += m.groups.groupWork[g];
-            rasterizeOccluderGroup(m.mask, m.groups.polygons.data() + m.groups.groupStart[g],
-                                   m.groups.groupStart[g + 1] - m.groups.groupStart[g], perOccluder ? shift : 0.0,
-                                   m.scratch);
-        }
-        m.markBudget = budget - stats.rasterWork;
-        if (!perOccluder && shift > 0.0)
-            m.mask.shrinkUnion(static_cast<std::uint32_t>(std::ceil(shift)));
-        stats.rasterizeMs = millisecondsSince(start);
-
-        start = Clock::now();
-        m.mask.buildPyramid();
-        stats.pyramidMs = millisecondsSince(start);
-
-        m.haveMask = true;
-        m.criticalView = view;
-        m.criticalDirection = viewDirection(view);
-        m.shift = shift;
-        m.maskShift = perOccluder ? shift : 0.0;
-
-        start = Clock::now();
-        m.stamps.clear();
-        markHidden(stats);
-        stats.markMs = millisecondsSince(start);
-
-        // Stamps run out one by one; the next critical frame comes when the marks of half the
-        // hidden objects have expired (or at once when nothing was marked).
-        double deltaMin = std::numeric_limits<double>::max(), deltaMax = 0.0;
-        std::uint64_t marked = 0;
-        for (const auto& [until, objects] : m.stamps)
-        {
-            const double delta = (until - t) * speed;
-            deltaMin = std::min(deltaMin, delta);
-            deltaMax = std::max(deltaMax, delta);
-            marked += objects;
-        }
-        std::sort(m.stamps.begin(), m.stamps.end());
-        m.criticalAfter = t;
-        std::uint64_t sum = 0;
-        for (const auto& [until, objects] : m.stamps)
-            if ((sum += objects) * 2 >= marked)
-            {
-                m.criticalAfter = until;
-                break;
-            }
-        if (m.stamps.empty())
-            deltaMin = 0.0;
-        m.delta = deltaMin;
-        m.validUntil = t + deltaMin / speed;
-        Impl::CriticalFrame& frame = m.alive.pushBack();
-        frame.eye = eye;
-        frame.time = t;
-        frame.deltaMin = deltaMin;
-        frame.deltaMax = deltaMax;
-        frame.occluders.assign(restingOn.begin(), restingOn.end());
-        stats.occluderObjects = static_cast<std::uint32_t>(occluders.size());
-        stats.occluderPolygons = static_cast<std::uint32_t>(m.groups.polygonCount());
-        stats.groups = static_cast<std::uint32_t>(m.groups.groupCount());
-        stats.coveredPixels = m.mask.coveredPixels();
-        if (m.debug)
-            for (std::uint32_t index : selected)
-                m.debug->activeOccluders.push_back(m.polygons[index].vertices);
-    }
+    const CriticalReason reason = criticalReasonFor(view);
+    if (reason != CriticalReason::None && !runCriticalFrame(view, reason))
+        return;
     stats.maskWidth = m.mask.width();
     stats.maskHeight = m.mask.height();
     stats.delta = m.delta;
@@ -645,7 +474,235 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
 
     // Stamped subtrees and objects drop out; moving objects are tested against the mask, which
     // holds for every eye of the current ball.
+    const double t = view.time;
     std::uint32_t culled = m.sceneHierarchy ? applyHierarchyMarks(t, visible) : applyTreeMarks(t, visible);
+    culled += cullMovingObjects(view.eye, visible);
+    stats.culled = culled;
+}
+
+bool MaskModule::aliveMarksHold(double t, const Vec3& eye)
+{
+    Impl& m = *_impl;
+    // Stamps are sound only while the eye stays inside the ball of the critical frame that wrote
+    // them; the speed bound V guarantees that, but an eye faster than V (or time running
+    // backwards) must not trust them.
+    const double speed = _options.maxEyeSpeed;
+    while (!m.alive.empty() && t >= m.alive.front().time + m.alive.front().deltaMax / speed)
+        m.alive.popFront();
+    bool trusted = true;
+    for (const Impl::CriticalFrame& frame : m.alive)
+    {
+        // Each stamp t_k + δ/V holds while the eye is within its δ of the critical eye: surely so
+        // inside the smallest δ, and otherwise as long as the eye kept to the speed V.
+        const double moved = glm::length(eye - frame.eye);
+        trusted = trusted && t >= frame.time &&
+                  (moved <= frame.deltaMin || moved <= speed * (t - frame.time) * (1.0 - 1e-12));
+    }
+    return trusted;
+}
+
+MaskModule::CriticalReason MaskModule::criticalReasonFor(const View& view)
+{
+    Impl& m = *_impl;
+    CriticalReason reason = CriticalReason::None;
+    if (!aliveMarksHold(view.time, view.eye))
+    {
+        m.forgetMarks();
+        reason = CriticalReason::LeftRegion;
+    }
+    else if (m.occluderGone)
+        reason = CriticalReason::OccluderGone;
+    else if (!m.haveMask)
+        reason = CriticalReason::First;
+    else if (!sameProjection(view, m.criticalView))
+    {
+        // The near plane decides which occluder parts are drawn at all.
+        m.forgetMarks();
+        reason = CriticalReason::ViewChanged;
+    }
+    else if (!sameOrientation(view, m.criticalView))
+    {
+        // Marks cover the critical frame (grown by Δ) only: objects partly outside it were
+        // judged by their part inside. Checked before expiry: a turn must forget the marks
+        // whatever else is due.
+        m.forgetMarks();
+        reason = CriticalReason::Turned;
+    }
+    else if (view.time >= m.criticalAfter)
+        reason = CriticalReason::StampExpired;
+    m.occluderGone = false;
+    return reason;
+}
+
+bool MaskModule::runCriticalFrame(const View& view, CriticalReason reason)
+{
+    Impl& m = *_impl;
+    Statistics& stats = m.statistics;
+    const MaskLayout layout = maskLayoutFor(view, _options);
+    if (!m.projection.set(view, layout.width, layout.height, layout.border, layout.clipMargin))
+    {
+        // Orthographic or unusual projections: no occlusion from this module.
+        m.forgetMarks();
+        return false;
+    }
+    stats.critical = reason;
+    Clock::time_point start = Clock::now();
+    const double nearDepth = std::max(_options.minOccluderDistance, 2.0 * m.projection.nearPlane());
+    selectOccluders(view);
+    stats.selectMs = millisecondsSince(start);
+
+    start = Clock::now();
+    rasterizeOccluders(nearDepth, layout.shift, stats);
+    stats.rasterizeMs = millisecondsSince(start);
+
+    start = Clock::now();
+    m.mask.buildPyramid();
+    stats.pyramidMs = millisecondsSince(start);
+
+    m.haveMask = true;
+    m.criticalView = view;
+    m.criticalDirection = viewDirection(view);
+    m.shift = layout.shift;
+    m.maskShift = _options.shrink == MaskShrink::PerOccluder ? layout.shift : 0.0;
+
+    start = Clock::now();
+    m.stamps.clear();
+    markHidden(stats);
+    stats.markMs = millisecondsSince(start);
+
+    recordCriticalFrame(view.time, view.eye);
+    stats.occluderObjects = static_cast<std::uint32_t>(m.occluders.size());
+    stats.occluderPolygons = static_cast<std::uint32_t>(m.groups.polygonCount());
+    stats.groups = static_cast<std::uint32_t>(m.groups.groupCount());
+    stats.coveredPixels = m.mask.coveredPixels();
+    if (m.debug)
+        for (std::uint32_t index : m.selected)
+            m.debug->activeOccluders.push_back(m.polygons[index].vertices);
+    return true;
+}
+
+void MaskModule::selectOccluders(const View& view)
+{
+    Impl& m = *_impl;
+    MaskSelectionInput input;
+    input.tree = &m.tree;
+    input.hierarchy = m.sceneHierarchy ? &m.index : nullptr;
+    input.objects = &_scene->objects;
+    input.usable = &m.usable;
+    input.view = &view;
+    input.projection = &m.projection;
+    input.eye = view.eye;
+    input.minDistance = _options.minOccluderDistance;
+    input.sampleRadius = m.delta;
+    input.count = _options.occluders;
+    input.measure = _options.measure;
+    std::vector<ObjectId>& occluders = m.occluders;
+    selectMaskOccluders(input, m.selection, occluders);
+    std::vector<std::uint32_t>& selected = m.selected;
+    selected.assign(m.statedPolygons.begin(), m.statedPolygons.end());
+    // A union of several objects' faces serves while every one of them stands still, and the
+    // marks rest on all of them (removing or moving any forgets the marks).
+    std::vector<ObjectId>& restingOn = m.restingOn;
+    restingOn.assign(occluders.begin(), occluders.end());
+    ++m.criticalCount;
+    for (ObjectId id : occluders)
+        for (std::uint32_t p : m.polygonsOf[id])
+        {
+            if (m.selectedIn[p] == m.criticalCount)
+                continue;
+            const std::vector<ObjectId>& parts = m.polygons[p].parts;
+            if (!std::all_of(parts.begin(), parts.end(),
+                             [&](ObjectId part)
+                             { return part < m.present.size() && m.present[part] && !m.moving[part]; }))
+                continue;
+            m.selectedIn[p] = m.criticalCount;
+            selected.push_back(p);
+            restingOn.insert(restingOn.end(), parts.begin(), parts.end());
+        }
+    std::sort(restingOn.begin(), restingOn.end());
+    restingOn.erase(std::unique(restingOn.begin(), restingOn.end()), restingOn.end());
+    keepLargestPolygons(m.polygons, view.eye, _options.maxOccluderPolygons, selected, m.rankedPolygons);
+}
+
+void MaskModule::rasterizeOccluders(double nearDepth, double shift, Statistics& stats)
+{
+    Impl& m = *_impl;
+    buildMaskGroups(m.polygons, m.selected, m.projection, nearDepth, shift, m.groups);
+    fillTileDeltas(shift);
+    m.mask.reset(m.projection.width(), m.projection.height());
+    const bool perOccluder = _options.shrink == MaskShrink::PerOccluder;
+    // A group left out only hides less (its δ still bounds the tiles it reaches: smaller is safe).
+    const std::uint64_t budget =
+        _options.workBudget == 0 ? std::numeric_limits<std::uint64_t>::max() : _options.workBudget;
+    const std::uint64_t rasterBudget = budget == std::numeric_limits<std::uint64_t>::max() ? budget : budget / 5 * 3;
+    // Largest groups first (most tiles: they hide the most), ties by index: deterministic.
+    std::vector<std::uint32_t>& order = m.groupOrder;
+    order.resize(m.groups.groupCount());
+    for (std::uint32_t g = 0; g < order.size(); ++g)
+        order[g] = g;
+    if (_options.workBudget != 0)
+        std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+            const std::uint64_t wa = m.groups.groupWork[a], wb = m.groups.groupWork[b];
+            return wa > wb || (wa == wb && a < b);
+        });
+    for (const std::uint32_t g : order)
+    {
+        if (m.groups.groupWork[g] > rasterBudget - stats.rasterWork)
+        {
+            ++stats.groupsSkipped;
+            stats.overBudget = true;
+            continue;
+        }
+        stats.rasterWork += m.groups.groupWork[g];
+        rasterizeOccluderGroup(m.mask, m.groups.polygons.data() + m.groups.groupStart[g],
+                               m.groups.groupStart[g + 1] - m.groups.groupStart[g], perOccluder ? shift : 0.0,
+                               m.scratch);
+    }
+    m.markBudget = budget - stats.rasterWork;
+    if (!perOccluder && shift > 0.0)
+        m.mask.shrinkUnion(static_cast<std::uint32_t>(std::ceil(shift)));
+}
+
+void MaskModule::recordCriticalFrame(double t, const Vec3& eye)
+{
+    Impl& m = *_impl;
+    const double speed = _options.maxEyeSpeed;
+    // Stamps run out one by one; the next critical frame comes when the marks of half the
+    // hidden objects have expired (or at once when nothing was marked).
+    double deltaMin = std::numeric_limits<double>::max(), deltaMax = 0.0;
+    std::uint64_t marked = 0;
+    for (const auto& [until, objects] : m.stamps)
+    {
+        const double delta = (until - t) * speed;
+        deltaMin = std::min(deltaMin, delta);
+        deltaMax = std::max(deltaMax, delta);
+        marked += objects;
+    }
+    std::sort(m.stamps.begin(), m.stamps.end());
+    m.criticalAfter = t;
+    std::uint64_t sum = 0;
+    for (const auto& [until, objects] : m.stamps)
+        if ((sum += objects) * 2 >= marked)
+        {
+            m.criticalAfter = until;
+            break;
+        }
+    if (m.stamps.empty())
+        deltaMin = 0.0;
+    m.delta = deltaMin;
+    m.validUntil = t + deltaMin / speed;
+    Impl::CriticalFrame& frame = m.alive.pushBack();
+    frame.eye = eye;
+    frame.time = t;
+    frame.deltaMin = deltaMin;
+    frame.deltaMax = deltaMax;
+    frame.occluders.assign(m.restingOn.begin(), m.restingOn.end());
+}
+
+std::uint32_t MaskModule::cullMovingObjects(const Vec3& eye, VisibleSet& visible) const
+{
+    const Impl& m = *_impl;
+    std::uint32_t culled = 0;
     for (ObjectId id : m.movingIds)
     {
         if (!visible.test(id))
@@ -655,7 +712,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
             glm::length(eye - m.criticalView.eye) <= delta)
             visible.clear(id), ++culled;
     }
-    stats.culled = culled;
+    return culled;
 }
 
 bool MaskModule::objectBehindMask(const Aabb& box, int splits, double& delta) const
@@ -739,32 +796,41 @@ void MaskModule::fillTileDeltas(double shift)
     }
 }
 
-void MaskModule::markHidden(Statistics& stats)
+// One marking pass of a critical frame: the stamps it gives, its budget and the box tests that the
+// walk over the kd-tree and the one over the renderer's traversal share.
+struct MaskModule::MarkPass
 {
-    Impl& m = *_impl;
+    MaskModule& module;
+    Impl& m;
+    const MaskOptions& options;
+    Statistics& stats;
+    const View& view;      // the critical frame's
+    double outOfViewDelta; // the largest δ of the groups
+
     // A stamp hides while it is later than the walk time; with δ = 0 it still has to hide in the
     // critical frame itself.
-    const double now = m.criticalView.time;
-    const auto stampFor = [&](double delta)
-    { return std::max(now + delta / _options.maxEyeSpeed, std::nextafter(now, std::numeric_limits<double>::infinity())); };
-    double outOfViewDelta = 0.0;
-    for (double delta : m.groups.groupDelta)
-        outOfViewDelta = std::max(outOfViewDelta, delta);
-    const View& view = m.criticalView;
-    const auto chargeBoxTest = [&](Statistics& s)
+    double stampFor(double delta) const
     {
-        if (_options.boxTestWork > m.markBudget - s.markWork)
+        const double now = view.time;
+        return std::max(now + delta / options.maxEyeSpeed,
+                        std::nextafter(now, std::numeric_limits<double>::infinity()));
+    }
+
+    bool chargeBoxTest()
+    {
+        if (options.boxTestWork > m.markBudget - stats.markWork)
         {
-            s.overBudget = true;
+            stats.overBudget = true;
             return false;
         }
-        s.markWork += _options.boxTestWork;
+        stats.markWork += options.boxTestWork;
         return true;
-    };
+    }
+
     // A node whose whole box is decided: out of view for every eye within outOfViewDelta (the
     // frustum's planes move with the eye, its orientation kept), or behind the mask. Out-of-view
     // marks do not decide when the next critical frame comes (weight 0). markNode(until) marks it.
-    const auto nodeDecided = [&](const Aabb& box, std::uint32_t objects, auto&& markNode) -> bool
+    template <typename MarkNode> bool nodeDecided(const Aabb& box, std::uint32_t objects, MarkNode&& markNode)
     {
         if (view.frustum.classify(box) == Containment::Outside)
         {
@@ -776,11 +842,11 @@ void MaskModule::markHidden(Statistics& stats)
             }
             return true;
         }
-        if (!chargeBoxTest(stats))
+        if (!chargeBoxTest())
             return true; // out of budget: left unmarked, so visible, and not descended into
         ++stats.nodesTested;
         double delta = 0.0;
-        if (!objectBehindMask(box, 0, delta))
+        if (!module.objectBehindMask(box, 0, delta))
             return false;
         const double until = stampFor(delta);
         markNode(until);
@@ -789,66 +855,86 @@ void MaskModule::markHidden(Statistics& stats)
         if (m.debug)
             m.debug->nodes.push_back({box, NodeState::Invisible, 0});
         return true;
-    };
+    }
+
     // Below ρ objects (or at a leaf) they are tested one by one.
-    const auto testObject = [&](ObjectId id, auto&& markObject)
+    template <typename MarkObject> void testObject(ObjectId id, MarkObject&& markObject)
     {
         double delta = 0.0;
-        if (m.moving[id] || !chargeBoxTest(stats) ||
-            !objectBehindMask(_scene->objects[id].bounds, kObjectSplits, delta))
+        if (m.moving[id] || !chargeBoxTest() ||
+            !module.objectBehindMask(module._scene->objects[id].bounds, kObjectSplits, delta))
             return;
         const double until = stampFor(delta);
         markObject(until);
         m.stamps.push_back({until, 1u});
         ++stats.objectsMarked;
-    };
-    const auto recordTested = [&](const Aabb& box)
+    }
+
+    void recordTested(const Aabb& box)
     {
         if (m.debug)
             m.debug->nodes.push_back({box, NodeState::Visible, 0});
-    };
-
-    if (m.sceneHierarchy)
-    {
-        // The renderer's traversal; its order does not matter (each box is judged on its own).
-        if (!m.walk)
-            m.walk = std::make_unique<HierarchyIndex::Walk>(m.index, view.eye, false);
-        m.walk->restart(view.eye);
-        HierarchyIndex::Walk& walk = *m.walk;
-        const std::vector<ObjectId>& objects = m.index.objects();
-        auto enter = [&](const HierarchyNode& node) -> bool
-        {
-            const HierarchyIndex::Node* found = walk.enter(node);
-            if (!found)
-            {
-                ++stats.nodesStrayed; // nothing is marked there: its objects stay as they are
-                return false;
-            }
-            const HierarchyIndex::Node& n = *found;
-            const auto skip = [&]()
-            {
-                walk.leave();
-                return false;
-            };
-            const std::uint32_t count = n.subtreeEnd - n.firstObject;
-            if (count == 0 || nodeDecided(n.contents, count, [&](double until)
-                                          { m.rangeMarks.push_back({n.firstObject, n.subtreeEnd, until}); }))
-                return skip();
-            const bool oneByOne = n.leaf() || count < _options.stopObjects;
-            const std::uint32_t end = oneByOne ? n.subtreeEnd : n.firstObject + n.heldCount;
-            for (std::uint32_t i = n.firstObject; i < end; ++i)
-                testObject(objects[i], [&](double until) { m.rangeMarks.push_back({i, i + 1, until}); });
-            if (!oneByOne)
-                return true;
-            recordTested(n.contents);
-            return skip();
-        };
-        auto leave = [&](const HierarchyNode&) { walk.leave(); };
-        LambdaVisitor<decltype(enter), decltype(leave)> visitor(enter, leave);
-        m.sceneHierarchy->traverse(view.eye, visitor);
-        return;
     }
 
+    void markHierarchy();
+    void markTree();
+};
+
+void MaskModule::markHidden(Statistics& stats)
+{
+    Impl& m = *_impl;
+    double outOfViewDelta = 0.0;
+    for (double delta : m.groups.groupDelta)
+        outOfViewDelta = std::max(outOfViewDelta, delta);
+    MarkPass pass{*this, m, _options, stats, m.criticalView, outOfViewDelta};
+    if (m.sceneHierarchy)
+        pass.markHierarchy();
+    else
+        pass.markTree();
+}
+
+void MaskModule::MarkPass::markHierarchy()
+{
+    // The renderer's traversal; its order does not matter (each box is judged on its own).
+    if (!m.walk)
+        m.walk = std::make_unique<HierarchyIndex::Walk>(m.index, view.eye, false);
+    m.walk->restart(view.eye);
+    HierarchyIndex::Walk& walk = *m.walk;
+    const std::vector<ObjectId>& objects = m.index.objects();
+    auto enter = [&](const HierarchyNode& node) -> bool
+    {
+        const HierarchyIndex::Node* found = walk.enter(node);
+        if (!found)
+        {
+            ++stats.nodesStrayed; // nothing is marked there: its objects stay as they are
+            return false;
+        }
+        const HierarchyIndex::Node& n = *found;
+        const auto skip = [&]()
+        {
+            walk.leave();
+            return false;
+        };
+        const std::uint32_t count = n.subtreeEnd - n.firstObject;
+        if (count == 0 || nodeDecided(n.contents, count, [&](double until)
+                                      { m.rangeMarks.push_back({n.firstObject, n.subtreeEnd, until}); }))
+            return skip();
+        const bool oneByOne = n.leaf() || count < options.stopObjects;
+        const std::uint32_t end = oneByOne ? n.subtreeEnd : n.firstObject + n.heldCount;
+        for (std::uint32_t i = n.firstObject; i < end; ++i)
+            testObject(objects[i], [&](double until) { m.rangeMarks.push_back({i, i + 1, until}); });
+        if (!oneByOne)
+            return true;
+        recordTested(n.contents);
+        return skip();
+    };
+    auto leave = [&](const HierarchyNode&) { walk.leave(); };
+    LambdaVisitor<decltype(enter), decltype(leave)> visitor(enter, leave);
+    m.sceneHierarchy->traverse(view.eye, visitor);
+}
+
+void MaskModule::MarkPass::markTree()
+{
     std::vector<std::uint32_t>& stack = m.nodeStack;
     stack.assign(1, m.tree.root());
     while (!stack.empty())
@@ -859,7 +945,7 @@ void MaskModule::markHidden(Statistics& stats)
         if (node.objectCount == 0 || node.bounds.empty() ||
             nodeDecided(node.bounds, node.objectCount, [&](double until) { m.tree.markNode(index, until); }))
             continue;
-        if (!node.leaf() && node.objectCount >= _options.stopObjects)
+        if (!node.leaf() && node.objectCount >= options.stopObjects)
         {
             stack.push_back(node.right);
             stack.push_back(node.left);

@@ -279,6 +279,153 @@ const TileKernels& kernelsFor(MaskTileKernel kernel)
         kernel == MaskTileKernel::Avx2 && maskTileKernelAvailable(kernel) ? avx2TileKernels() : nullptr;
     return avx2 ? *avx2 : sse2TileKernels();
 }
+
+// Sets up the group's polygons in `tiles` (setups, shapes) and the pixels they reach together;
+// false when a polygon is not finite.
+bool setupGroup(const ScreenPolygon* polygons, std::size_t count, double shrink, const OcclusionMask& mask,
+                MaskRasterScratch::Tiles& tiles, PixelRange& region)
+{
+    std::vector<PolygonSetup>& setups = tiles.setups;
+    std::vector<Shape>& shapes = tiles.shapes;
+    if (setups.size() < count)
+        setups.resize(count);
+    shapes.resize(count);
+
+    region = PixelRange{int(mask.width()), int(mask.height()), -1, -1};
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        shapes[i] = setupPolygon(polygons[i], shrink, mask, setups[i]);
+        if (shapes[i] == Shape::NonFinite)
+            return false; // any non-finite polygon spoils the group
+        unite(region, setups[i].pixels);
+    }
+    return true;
+}
+
+// Fills tiles.nearest: each convex polygon's smallest depth over its pixel range (infinite for the
+// others); returns the least of them.
+float fillNearestDepths(MaskRasterScratch::Tiles& tiles, std::size_t count, double shrink)
+{
+    std::vector<float>& nearest = tiles.nearest;
+    nearest.assign(count, InfiniteDepth);
+    float groupNearest = InfiniteDepth;
+    for (std::size_t i = 0; i < count; ++i)
+        if (tiles.shapes[i] == Shape::Convex && !tiles.setups[i].pixels.empty())
+        {
+            nearest[i] = smallestDepth(tiles.setups[i], tiles.setups[i].pixels, shrink);
+            groupNearest = std::min(groupNearest, nearest[i]);
+        }
+    return groupNearest;
+}
+
+// True when some block of the mask over `region` may hold a depth farther than groupNearest (its bound
+// is), so that the group may change it.
+bool mayBeNearerThanMask(const OcclusionMask& mask, const PixelRange& region, float groupNearest)
+{
+    const int blocks = int(TileSize * OcclusionMask::BlockTiles);
+    float regionBound = -InfiniteDepth;
+    for (int by = region.y0 / blocks; by <= region.y1 / blocks && !(groupNearest < regionBound); ++by)
+        for (int bx = region.x0 / blocks; bx <= region.x1 / blocks; ++bx)
+            regionBound = std::max(regionBound, mask.blockBound(std::uint32_t(bx), std::uint32_t(by)));
+    return groupNearest < regionBound;
+}
+
+// One group being rasterized: what its tile rows and tiles read and write.
+struct GroupRaster
+{
+    const TileKernels& kernels;
+    OcclusionMask& mask;
+    MaskRasterScratch::Tiles& tiles;
+    std::size_t count;
+    float groupNearest;   // the least of tiles.nearest
+    PixelRange maskRange; // the mask's pixels
+};
+
+// Fills tiles.spans for tile row `ty` and lists the polygons touching the row in tiles.rowPolygons;
+// rowFirst..rowLast: the tile columns the convex ones may touch (empty when none does).
+void collectRowPolygons(const GroupRaster& group, int ty, int& rowFirst, int& rowLast)
+{
+    const std::vector<PolygonSetup>& setups = group.tiles.setups;
+    const std::vector<Shape>& shapes = group.tiles.shapes;
+    std::vector<int>& spans = group.tiles.spans;
+    std::vector<std::uint32_t>& rowPolygons = group.tiles.rowPolygons;
+    rowFirst = std::numeric_limits<int>::max();
+    rowLast = -1;
+    // Tiles of the row look only at the polygons touching the row: a large group spans many
+    // rows, each of its polygons few.
+    rowPolygons.clear();
+    for (std::size_t i = 0; i < group.count; ++i)
+    {
+        int& first = spans[4 * i];
+        int& last = spans[4 * i + 1];
+        spans[4 * i + 2] = 0;
+        spans[4 * i + 3] = -1;
+        const PixelRange& p = setups[i].pixels;
+        if (shapes[i] == Shape::Convex ? !tileSpan(setups[i], ty, first, last)
+                                       : p.empty() || p.y1 < ty * TileSize || p.y0 >= (ty + 1) * TileSize)
+        {
+            first = 0;
+            last = -1;
+            continue;
+        }
+        if (shapes[i] != Shape::Convex)
+        {
+            first = p.x0 / TileSize;
+            last = p.x1 / TileSize;
+        }
+        else
+        {
+            rowFirst = std::min(rowFirst, first);
+            rowLast = std::max(rowLast, last);
+            insideSpan(setups[i], ty * TileSize, std::min(ty * TileSize + TileSize, int(group.mask.height())) - 1,
+                       spans[4 * i + 2], spans[4 * i + 3]);
+        }
+        rowPolygons.push_back(std::uint32_t(i));
+    }
+}
+
+// Tile (tx, ty) of the current row: the row's polygons over it, merged into the mask unless the
+// tile's bound shows that nothing they write could change it. Returns the pixels it covered.
+std::size_t rasterizeTile(const GroupRaster& group, int tx, int ty, TileWork& work)
+{
+    const std::vector<PolygonSetup>& setups = group.tiles.setups;
+    const std::vector<Shape>& shapes = group.tiles.shapes;
+    const std::vector<int>& spans = group.tiles.spans;
+    const float bound = group.mask.tileBound(std::uint32_t(tx), std::uint32_t(ty));
+    if (!(group.groupNearest < bound))
+        return 0;
+    const PixelRange tile =
+        intersect(group.maskRange,
+                  PixelRange{tx * TileSize, ty * TileSize, tx * TileSize + TileSize - 1, ty * TileSize + TileSize - 1});
+    if (group.count > 1)
+    {
+        // The tighter test over the tile alone, for groups whose polygons lie at different depths.
+        float tileNearest = InfiniteDepth;
+        for (std::uint32_t i : group.tiles.rowPolygons)
+            if (shapes[i] == Shape::Convex && spans[4 * i] <= tx && tx <= spans[4 * i + 1])
+                tileNearest = std::min(tileNearest, group.tiles.nearest[i]);
+        if (!(tileNearest < bound))
+            return 0;
+    }
+    work.touched = work.vetoed = 0;
+    work.contributors = 0;
+    for (std::uint32_t i : group.tiles.rowPolygons)
+    {
+        if (tx < spans[4 * i] || tx > spans[4 * i + 1])
+            continue;
+        const PixelRange r = intersect(tile, setups[i].pixels);
+        if (r.empty())
+            continue;
+        if (shapes[i] == Shape::Convex)
+            polygonInTile(group.kernels, setups[i], tile, tx, ty, spans[4 * i + 2] <= tx && tx <= spans[4 * i + 3],
+                          work);
+        else // degenerate: vetoes what it touches
+            work.vetoed |=
+                rectBits(r.x0 - tx * TileSize, r.x1 - tx * TileSize, r.y0 - ty * TileSize, r.y1 - ty * TileSize);
+    }
+    const std::uint64_t lanes = work.touched & ~work.vetoed;
+    return lanes != 0 ? mergeTile(group.kernels, group.mask, tx, ty, tile, lanes, work) : 0;
+}
 } // namespace
 
 bool maskTileKernelAvailable(MaskTileKernel kernel)
@@ -295,85 +442,29 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
         return 0;
     if (!scratch.tiles)
         scratch.tiles = std::make_unique<MaskRasterScratch::Tiles>();
-    std::vector<PolygonSetup>& setups = scratch.tiles->setups;
-    std::vector<Shape>& shapes = scratch.tiles->shapes;
-    if (setups.size() < count)
-        setups.resize(count);
-    shapes.resize(count);
-
-    PixelRange region{int(mask.width()), int(mask.height()), -1, -1};
-    for (std::size_t i = 0; i < count; ++i)
-    {
-        shapes[i] = setupPolygon(polygons[i], shrink, mask, setups[i]);
-        if (shapes[i] == Shape::NonFinite)
-            return 0; // any non-finite polygon spoils the group
-        unite(region, setups[i].pixels);
-    }
-    if (region.empty())
+    MaskRasterScratch::Tiles& tiles = *scratch.tiles;
+    PixelRange region;
+    if (!setupGroup(polygons, count, shrink, mask, tiles, region) || region.empty())
         return 0;
 
     const TileKernels& kernels = kernelsFor(kernel);
     // Every depth a polygon writes is at least its smallest depth over its pixel range; where the
     // mask already holds nothing farther, nothing would change (min keeps the stored depth).
-    std::vector<float>& nearest = scratch.tiles->nearest;
-    nearest.assign(count, InfiniteDepth);
-    float groupNearest = InfiniteDepth;
-    for (std::size_t i = 0; i < count; ++i)
-        if (shapes[i] == Shape::Convex && !setups[i].pixels.empty())
-        {
-            nearest[i] = smallestDepth(setups[i], setups[i].pixels, shrink);
-            groupNearest = std::min(groupNearest, nearest[i]);
-        }
+    const float groupNearest = fillNearestDepths(tiles, count, shrink);
     // The whole group at once, by blocks of tiles (front-to-back occluders behind the mask so far).
-    const int blocks = int(TileSize * OcclusionMask::BlockTiles);
-    float regionBound = -InfiniteDepth;
-    for (int by = region.y0 / blocks; by <= region.y1 / blocks && !(groupNearest < regionBound); ++by)
-        for (int bx = region.x0 / blocks; bx <= region.x1 / blocks; ++bx)
-            regionBound = std::max(regionBound, mask.blockBound(std::uint32_t(bx), std::uint32_t(by)));
-    if (!(groupNearest < regionBound))
+    if (!mayBeNearerThanMask(mask, region, groupNearest))
         return 0;
     // Per polygon, for the current tile row: the first and last tile column it may touch, and the
     // first and last wholly inside it.
-    std::vector<int>& spans = scratch.tiles->spans;
-    spans.resize(4 * count);
+    tiles.spans.resize(4 * count);
     const PixelRange maskRange{0, 0, int(mask.width()) - 1, int(mask.height()) - 1};
+    const GroupRaster group{kernels, mask, tiles, count, groupNearest, maskRange};
     TileWork work;
     std::size_t covered = 0;
-    std::vector<std::uint32_t>& rowPolygons = scratch.tiles->rowPolygons;
     for (int ty = region.y0 / TileSize; ty <= region.y1 / TileSize; ++ty)
     {
-        int rowFirst = std::numeric_limits<int>::max(), rowLast = -1;
-        // Tiles of the row look only at the polygons touching the row: a large group spans many
-        // rows, each of its polygons few.
-        rowPolygons.clear();
-        for (std::size_t i = 0; i < count; ++i)
-        {
-            int& first = spans[4 * i];
-            int& last = spans[4 * i + 1];
-            spans[4 * i + 2] = 0;
-            spans[4 * i + 3] = -1;
-            const PixelRange& p = setups[i].pixels;
-            if (shapes[i] == Shape::Convex ? !tileSpan(setups[i], ty, first, last)
-                                           : p.empty() || p.y1 < ty * TileSize || p.y0 >= (ty + 1) * TileSize)
-            {
-                first = 0;
-                last = -1;
-                continue;
-            }
-            if (shapes[i] != Shape::Convex)
-            {
-                first = p.x0 / TileSize;
-                last = p.x1 / TileSize;
-            }
-            else
-            {
-                rowFirst = std::min(rowFirst, first);
-                rowLast = std::max(rowLast, last);
-                insideSpan(setups[i], ty * TileSize, std::min(ty * TileSize + TileSize, int(mask.height())) - 1,
-                           spans[4 * i + 2], spans[4 * i + 3]);
-            }
-            rowPolygons.push_back(std::uint32_t(i));
-        }
+        int rowFirst = 0, rowLast = -1;
+        collectRowPolygons(group, ty, rowFirst, rowLast);
         for (int tx = rowFirst; tx <= rowLast; ++tx)
         {
             const int blockTiles = int(OcclusionMask::BlockTiles);
@@ -383,41 +474,7 @@ std::size_t rasterizeOccluderGroupTiled(MaskTileKernel kernel, OcclusionMask& ma
                 tx = (tx / blockTiles + 1) * blockTiles - 1; // the rest of the block
                 continue;
             }
-            const float bound = mask.tileBound(std::uint32_t(tx), std::uint32_t(ty));
-            if (!(groupNearest < bound))
-                continue;
-            const PixelRange tile =
-                intersect(maskRange, PixelRange{tx * TileSize, ty * TileSize, tx * TileSize + TileSize - 1,
-                                                ty * TileSize + TileSize - 1});
-            if (count > 1)
-            {
-                // The tighter test over the tile alone, for groups whose polygons lie at different depths.
-                float tileNearest = InfiniteDepth;
-                for (std::uint32_t i : rowPolygons)
-                    if (shapes[i] == Shape::Convex && spans[4 * i] <= tx && tx <= spans[4 * i + 1])
-                        tileNearest = std::min(tileNearest, nearest[i]);
-                if (!(tileNearest < bound))
-                    continue;
-            }
-            work.touched = work.vetoed = 0;
-            work.contributors = 0;
-            for (std::uint32_t i : rowPolygons)
-            {
-                if (tx < spans[4 * i] || tx > spans[4 * i + 1])
-                    continue;
-                const PixelRange r = intersect(tile, setups[i].pixels);
-                if (r.empty())
-                    continue;
-                if (shapes[i] == Shape::Convex)
-                    polygonInTile(kernels, setups[i], tile, tx, ty, spans[4 * i + 2] <= tx && tx <= spans[4 * i + 3],
-                                  work);
-                else // degenerate: vetoes what it touches
-                    work.vetoed |= rectBits(r.x0 - tx * TileSize, r.x1 - tx * TileSize, r.y0 - ty * TileSize,
-                                            r.y1 - ty * TileSize);
-            }
-            const std::uint64_t lanes = work.touched & ~work.vetoed;
-            if (lanes != 0)
-                covered += mergeTile(kernels, mask, tx, ty, tile, lanes, work);
+            covered += rasterizeTile(group, tx, ty, work);
         }
     }
     return covered;

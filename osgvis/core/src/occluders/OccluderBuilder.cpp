@@ -113,49 +113,75 @@ std::vector<std::vector<std::uint32_t>> edgeNeighbours(const std::vector<Region>
     }
     return across;
 }
-} // namespace
 
-std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const OccluderBuildOptions& options)
+// What may become an occluder: the eligible objects, the valid stated polygons, and the extent of
+// them all (it scales the weld tolerance).
+struct EligibleSources
 {
-    const double planeTolerance = std::max(options.planeTolerance, 0.0);
-
-    // Extent of everything that may become an occluder: it scales the weld tolerance.
-    std::vector<ObjectId> sources;
-    std::size_t eligibleTriangles = 0;
+    std::vector<ObjectId> objects;
+    std::size_t triangleCount = 0;
+    std::vector<const ConvexPolygon*> stated;
     Aabb extent;
+};
+
+EligibleSources eligibleSources(const Scene& scene, const OccluderBuildOptions& options, double planeTolerance)
+{
+    EligibleSources sources;
     for (const SceneObject& object : scene.objects)
     {
         if (!isEligible(object, options.sceneGeometry))
             continue;
-        sources.push_back(ObjectId(&object - scene.objects.data()));
+        sources.objects.push_back(ObjectId(&object - scene.objects.data()));
         const auto [first, end] = scene.trianglesOf(object);
-        eligibleTriangles += end - first;
+        sources.triangleCount += end - first;
         for (std::size_t t = first; t < end; ++t)
         {
             const Triangle& tri = scene.triangles[t];
             for (const Vec3f& v : {tri.a, tri.b, tri.c})
             {
                 if (isFinite(Vec3(v)))
-                    extent.expand(Vec3(v));
+                    sources.extent.expand(Vec3(v));
             }
         }
     }
-    std::vector<const ConvexPolygon*> stated;
     for (const OccluderCandidate& candidate : scene.occluders)
     {
         if (!candidate.polygon.isValidOccluder(options.minArea, planeTolerance > 0.0 ? planeTolerance : 1e-6))
             continue;
-        stated.push_back(&candidate.polygon);
+        sources.stated.push_back(&candidate.polygon);
         for (const Vec3& v : candidate.polygon.vertices())
-            extent.expand(v);
+            sources.extent.expand(v);
     }
-    if (extent.empty())
-        return {};
+    return sources;
+}
 
-    const double sceneSize = glm::length(extent.extent());
-    VertexWelder welder(extent.min, sceneSize, std::max(options.weldTolerance, 0.0) * sceneSize);
-    welder.reserve(eligibleTriangles); // closed meshes have about half as many vertices as triangles
+// Appends the usable triangles of `object` to `entry`, welded, with the winding of its drawn side.
+void appendWeldedTriangles(const Scene& scene, const SceneObject& object, ObjectId id, bool flip, double planeTolerance,
+                           VertexWelder& welder, ObjectTriangles& entry)
+{
+    const auto [first, end] = scene.trianglesOf(object);
+    entry.triangles.reserve(entry.triangles.size() + (end - first));
+    for (std::size_t t = first; t < end; ++t)
+    {
+        const Triangle& tri = scene.triangles[t];
+        const Vec3 a(tri.a), b(tri.b), c(tri.c);
+        if (!isFinite(a) || !isFinite(b) || !isFinite(c))
+            continue;
+        // Culled front faces: the drawn side is the back, so the winding turns round.
+        std::array<std::uint32_t, 3> ids{welder.weld(a), welder.weld(flip ? c : b), welder.weld(flip ? b : c)};
+        MergeTriangle merged;
+        if (weldedTriangle(ids, welder.positions(), planeTolerance, merged))
+        {
+            merged.tag = id;
+            entry.triangles.push_back(merged);
+        }
+    }
+}
 
+// The welded triangles of each source object; objects left without any go.
+std::vector<ObjectTriangles> weldObjectTriangles(const Scene& scene, const std::vector<ObjectId>& sources,
+                                                 double planeTolerance, VertexWelder& welder)
+{
     // note: the clusters of one split drawable (SceneObject::group) merge as one object, so a face
     // that crosses cluster borders stays one polygon; each polygon names the clusters its triangles
     // come from (tags), and a module uses it only while all of them are drawn.
@@ -179,28 +205,18 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
         }
         else
             objects.push_back({id, oneSided, {}});
-        ObjectTriangles& entry = objects[entryIndex];
-        const auto [first, end] = scene.trianglesOf(object);
-        entry.triangles.reserve(entry.triangles.size() + (end - first));
-        for (std::size_t t = first; t < end; ++t)
-        {
-            const Triangle& tri = scene.triangles[t];
-            const Vec3 a(tri.a), b(tri.b), c(tri.c);
-            if (!isFinite(a) || !isFinite(b) || !isFinite(c))
-                continue;
-            // Culled front faces: the drawn side is the back, so the winding turns round.
-            std::array<std::uint32_t, 3> ids{welder.weld(a), welder.weld(flip ? c : b), welder.weld(flip ? b : c)};
-            MergeTriangle merged;
-            if (weldedTriangle(ids, welder.positions(), planeTolerance, merged))
-            {
-                merged.tag = id;
-                entry.triangles.push_back(merged);
-            }
-        }
+        appendWeldedTriangles(scene, object, id, flip, planeTolerance, welder, objects[entryIndex]);
     }
     objects.erase(std::remove_if(objects.begin(), objects.end(),
                                  [](const ObjectTriangles& entry) { return entry.triangles.empty(); }),
                   objects.end());
+    return objects;
+}
+
+// The stated polygons as loops of welded ids without repeated corners; loops that collapse go.
+std::vector<std::vector<std::uint32_t>> weldStatedLoops(const std::vector<const ConvexPolygon*>& stated,
+                                                        VertexWelder& welder)
+{
     std::vector<std::vector<std::uint32_t>> statedLoops;
     for (const ConvexPolygon* polygon : stated)
     {
@@ -216,8 +232,15 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
         if (loop.size() >= 3)
             statedLoops.push_back(std::move(loop));
     }
-    const std::vector<Vec3>& positions = welder.positions();
+    return statedLoops;
+}
 
+// The convex polygons each object's coplanar triangles merge into, per object.
+std::vector<std::vector<MergedPolygon>> mergeCoplanarTriangles(const std::vector<ObjectTriangles>& objects,
+                                                               const std::vector<Vec3>& positions,
+                                                               const OccluderBuildOptions& options,
+                                                               double planeTolerance)
+{
     CoplanarMergeOptions mergeOptions;
     mergeOptions.sinCoplanarAngle = std::sin(std::clamp(options.coplanarAngle, 0.0, 1.5));
     mergeOptions.planeTolerance = planeTolerance;
@@ -235,7 +258,14 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
                           for (std::size_t i = range.begin(); i != range.end(); ++i)
                               merger.merge(objects[i].triangles, mergedPerObject[i]);
                       });
+    return mergedPerObject;
+}
 
+// The merged polygons as regions, in object order, then the stated loops (moved from).
+std::vector<Region> regionsOf(const std::vector<ObjectTriangles>& objects,
+                              std::vector<std::vector<MergedPolygon>>& mergedPerObject,
+                              std::vector<std::vector<std::uint32_t>>& statedLoops, const std::vector<Vec3>& positions)
+{
     std::vector<Region> regions;
     for (std::size_t i = 0; i < objects.size(); ++i)
     {
@@ -255,6 +285,14 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
         const Vec3 normal = glm::normalize(loopNormal(loop, positions));
         regions.push_back({std::move(loop), normal, InvalidObject, false, {}});
     }
+    return regions;
+}
+
+// The optional coplanar unions and T-junction repair, and the dropping of pieces too small.
+void refineRegions(std::vector<Region>& regions, VertexWelder& welder, double sceneSize, double planeTolerance,
+                   const OccluderBuildOptions& options)
+{
+    const std::vector<Vec3>& positions = welder.positions();
     if (options.planarUnions)
     {
         RegionUnionOptions unionOptions;
@@ -274,44 +312,42 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
                   regions.end());
     if (options.repairTJunctions)
         repairTJunctions(regions, positions, sceneSize);
+}
 
-    // Straight-line vertices go, except where the neighbour across the outline changes: there
-    // both polygons keep the vertex, so their shared edges still match end to end.
-    const std::vector<std::vector<std::uint32_t>> across = edgeNeighbours(regions);
-    std::vector<OccluderPolygon> polygons(regions.size());
-    std::vector<std::vector<std::uint32_t>> outlineIds(regions.size());
-    std::vector<bool> usable(regions.size());
-    for (std::size_t r = 0; r < regions.size(); ++r)
+// Fills `polygon` and `outlineIds` with the corners of `region` (its neighbours across each loop
+// edge in `across`); returns whether the polygon can be used.
+bool outlinePolygon(const Region& region, const std::vector<std::uint32_t>& across, const std::vector<Vec3>& positions,
+                    double planeTolerance, OccluderPolygon& polygon, std::vector<std::uint32_t>& outlineIds)
+{
+    const std::size_t n = region.loop.size();
+    std::vector<bool> keep(n);
+    for (std::size_t i = 0; i < n; ++i)
+        keep[i] = across[(i + n - 1) % n] != across[i];
+    const std::vector<std::size_t> corners = cornerIndices(region.loop, positions, region.normal, planeTolerance, keep);
+
+    for (std::size_t i : corners)
     {
-        const Region& region = regions[r];
-        const std::size_t n = region.loop.size();
-        std::vector<bool> keep(n);
-        for (std::size_t i = 0; i < n; ++i)
-            keep[i] = across[r][(i + n - 1) % n] != across[r][i];
-        const std::vector<std::size_t> corners =
-            cornerIndices(region.loop, positions, region.normal, planeTolerance, keep);
-
-        OccluderPolygon& polygon = polygons[r];
-        for (std::size_t i : corners)
-        {
-            outlineIds[r].push_back(region.loop[i]);
-            polygon.vertices.push_back(positions[region.loop[i]]);
-            polygon.neighbours.push_back(across[r][i]);
-        }
-        const ConvexPolygon outline(polygon.vertices);
-        const Vec3 newell = outline.newellNormal();
-        polygon.area = 0.5 * glm::length(newell);
-        polygon.centroid = outline.centroid();
-        polygon.plane = Plane::fromPointNormal(polygon.centroid, newell / glm::length(newell));
-        polygon.oneSided = region.oneSided;
-        polygon.owner = region.owner;
-        polygon.parts = region.parts;
-        usable[r] = corners.size() >= 3 && polygon.area > 0.0 && isFinite(polygon.plane.normal) &&
-                    std::isfinite(polygon.plane.d);
+        outlineIds.push_back(region.loop[i]);
+        polygon.vertices.push_back(positions[region.loop[i]]);
+        polygon.neighbours.push_back(across[i]);
     }
+    const ConvexPolygon outline(polygon.vertices);
+    const Vec3 newell = outline.newellNormal();
+    polygon.area = 0.5 * glm::length(newell);
+    polygon.centroid = outline.centroid();
+    polygon.plane = Plane::fromPointNormal(polygon.centroid, newell / glm::length(newell));
+    polygon.oneSided = region.oneSided;
+    polygon.owner = region.owner;
+    polygon.parts = region.parts;
+    return corners.size() >= 3 && polygon.area > 0.0 && isFinite(polygon.plane.normal) &&
+           std::isfinite(polygon.plane.d);
+}
 
-    // A neighbour must have the very same edge back; tolerance calls made on each side alone
-    // could differ, and then the edge is left unlinked.
+// A neighbour must have the very same edge back; tolerance calls made on each side alone
+// could differ, and then the edge is left unlinked.
+void unlinkUnmatchedEdges(std::vector<OccluderPolygon>& polygons,
+                          const std::vector<std::vector<std::uint32_t>>& outlineIds)
+{
     for (std::size_t p = 0; p < polygons.size(); ++p)
     {
         const auto& ids = outlineIds[p];
@@ -332,9 +368,12 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
                 q = NoNeighbour;
         }
     }
+}
 
-    // note: outlines are built from loops that passed the convexity check, so none should fail
-    // here; should one, it goes and its neighbours' links to it are cut.
+// note: outlines are built from loops that passed the convexity check, so none should fail
+// here; should one, it goes and its neighbours' links to it are cut.
+void dropUnusablePolygons(std::vector<OccluderPolygon>& polygons, const std::vector<bool>& usable)
+{
     std::vector<std::uint32_t> newIndex(polygons.size(), NoNeighbour);
     std::uint32_t kept = 0;
     for (std::size_t p = 0; p < polygons.size(); ++p)
@@ -352,6 +391,41 @@ std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const Occ
             polygons[newIndex[p]] = std::move(polygons[p]);
     }
     polygons.resize(kept);
+}
+} // namespace
+
+std::vector<OccluderPolygon> buildOccluderPolygons(const Scene& scene, const OccluderBuildOptions& options)
+{
+    const double planeTolerance = std::max(options.planeTolerance, 0.0);
+
+    const EligibleSources sources = eligibleSources(scene, options, planeTolerance);
+    if (sources.extent.empty())
+        return {};
+
+    const double sceneSize = glm::length(sources.extent.extent());
+    VertexWelder welder(sources.extent.min, sceneSize, std::max(options.weldTolerance, 0.0) * sceneSize);
+    welder.reserve(sources.triangleCount); // closed meshes have about half as many vertices as triangles
+
+    const std::vector<ObjectTriangles> objects = weldObjectTriangles(scene, sources.objects, planeTolerance, welder);
+    std::vector<std::vector<std::uint32_t>> statedLoops = weldStatedLoops(sources.stated, welder);
+    const std::vector<Vec3>& positions = welder.positions();
+
+    std::vector<std::vector<MergedPolygon>> mergedPerObject =
+        mergeCoplanarTriangles(objects, positions, options, planeTolerance);
+    std::vector<Region> regions = regionsOf(objects, mergedPerObject, statedLoops, positions);
+    refineRegions(regions, welder, sceneSize, planeTolerance, options);
+
+    // Straight-line vertices go, except where the neighbour across the outline changes: there
+    // both polygons keep the vertex, so their shared edges still match end to end.
+    const std::vector<std::vector<std::uint32_t>> across = edgeNeighbours(regions);
+    std::vector<OccluderPolygon> polygons(regions.size());
+    std::vector<std::vector<std::uint32_t>> outlineIds(regions.size());
+    std::vector<bool> usable(regions.size());
+    for (std::size_t r = 0; r < regions.size(); ++r)
+        usable[r] = outlinePolygon(regions[r], across[r], positions, planeTolerance, polygons[r], outlineIds[r]);
+
+    unlinkUnmatchedEdges(polygons, outlineIds);
+    dropUnusablePolygons(polygons, usable);
     return polygons;
 }
 } // namespace osgVis::core

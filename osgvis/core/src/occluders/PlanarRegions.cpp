@@ -46,12 +46,12 @@ bool withinOneInput(const UnionPiece& piece, const std::vector<UnionInput>& inpu
     }
     return false;
 }
-} // namespace
 
-void unitePlanarRegions(std::vector<OccluderRegion>& regions, VertexWelder& welder, const RegionUnionOptions& options)
+// The regions of objects (not stated occluders) grouped by plane, in key order.
+std::map<PlaneKey, std::vector<std::uint32_t>> planeGroups(const std::vector<OccluderRegion>& regions,
+                                                           const std::vector<Vec3>& positions, double sceneSize)
 {
-    const std::vector<Vec3>& positions = welder.positions();
-    const double offsetStep = 1e-7 * options.sceneSize;
+    const double offsetStep = 1e-7 * sceneSize;
     std::map<PlaneKey, std::vector<std::uint32_t>> groups;
     for (std::uint32_t r = 0; r < regions.size(); ++r)
     {
@@ -64,116 +64,172 @@ void unitePlanarRegions(std::vector<OccluderRegion>& regions, VertexWelder& weld
                 region.oneSided}]
             .push_back(r);
     }
+    return groups;
+}
+
+// The slab direction follows the longest edge, so walls of axial rectangles cut into
+// axial rectangles. Returns that edge's in-plane length (0 when none has one); `along` gets its
+// direction and `extent` widens over the members' vertices.
+double longestEdgeDirection(const std::vector<OccluderRegion>& regions, const std::vector<std::uint32_t>& members,
+                            const std::vector<Vec3>& positions, const Vec3& n, Vec3& along, Aabb& extent)
+{
+    double longest = 0.0;
+    for (std::uint32_t r : members)
+    {
+        const auto& loop = regions[r].loop;
+        for (std::size_t i = 0; i < loop.size(); ++i)
+        {
+            const Vec3 e = positions[loop[(i + 1) % loop.size()]] - positions[loop[i]];
+            const Vec3 inPlane = e - glm::dot(e, n) * n;
+            const double length = glm::length(inPlane);
+            if (length > longest)
+            {
+                longest = length;
+                along = inPlane / length;
+            }
+            extent.expand(positions[loop[i]]);
+        }
+    }
+    return longest;
+}
+
+// The plane's 2-D frame: coordinates along u and v from `origin`, with normal n.
+struct PlaneFrame
+{
+    Vec3 origin, n, u, v;
+};
+
+// The members in the frame's coordinates, counter-clockwise around n, and the region each came
+// from; a member farther than `offPlane` from the plane is left out.
+void unionInputs(const std::vector<OccluderRegion>& regions, const std::vector<std::uint32_t>& members,
+                 const std::vector<Vec3>& positions, const PlaneFrame& frame, double offPlane,
+                 std::vector<UnionInput>& inputs, std::vector<std::uint32_t>& inputRegion)
+{
+    for (std::uint32_t r : members)
+    {
+        const OccluderRegion& region = regions[r];
+        UnionInput in;
+        bool planar = true;
+        for (std::uint32_t id : region.loop)
+        {
+            const Vec3 p = positions[id] - frame.origin;
+            planar = planar && std::abs(glm::dot(p, frame.n)) <= offPlane;
+            in.points.push_back({glm::dot(p, frame.u), glm::dot(p, frame.v)});
+            in.ids.push_back(id);
+        }
+        if (!planar)
+            continue;
+        if (glm::dot(region.normal, frame.n) < 0.0)
+        {
+            std::reverse(in.points.begin(), in.points.end());
+            std::reverse(in.ids.begin(), in.ids.end());
+        }
+        inputs.push_back(std::move(in));
+        inputRegion.push_back(r);
+    }
+}
+
+// The piece's corners as welded ids (a corner on an input edge welded in, tightly), without
+// repeated ones.
+std::vector<std::uint32_t> weldedPieceLoop(const UnionPiece& piece, VertexWelder& welder, double sceneSize)
+{
+    const std::vector<Vec3>& positions = welder.positions();
+    std::vector<std::uint32_t> loop;
+    for (const UnionCorner& c : piece.corners)
+    {
+        std::uint32_t id = c.id;
+        if (id == NoUnionId)
+        {
+            const Vec3 p = positions[c.from] + c.t * (positions[c.to] - positions[c.from]);
+            id = welder.weld(p, 1e-12 * sceneSize);
+        }
+        if (loop.empty() || loop.back() != id)
+            loop.push_back(id);
+    }
+    while (loop.size() > 1 && loop.front() == loop.back())
+        loop.pop_back();
+    return loop;
+}
+
+// Sets the piece region's parts (ascending, none when only one) and owner from its sources.
+void setPieceParts(const UnionPiece& piece, const std::vector<OccluderRegion>& regions,
+                   const std::vector<std::uint32_t>& inputRegion, OccluderRegion& region)
+{
+    for (std::uint32_t source : piece.sources)
+    {
+        // a source over several clusters of one drawable stands for all of them
+        const OccluderRegion& input = regions[inputRegion[source]];
+        if (input.parts.empty())
+            region.parts.push_back(input.owner);
+        else
+            region.parts.insert(region.parts.end(), input.parts.begin(), input.parts.end());
+    }
+    std::sort(region.parts.begin(), region.parts.end());
+    region.parts.erase(std::unique(region.parts.begin(), region.parts.end()), region.parts.end());
+    region.owner = region.parts.front();
+    if (region.parts.size() == 1)
+        region.parts.clear();
+}
+
+// Appends to `pieces` the convex pieces of the union of one plane's `members` that unite two or
+// more of them.
+void unitePlaneGroup(const std::vector<OccluderRegion>& regions, const std::vector<std::uint32_t>& members,
+                     VertexWelder& welder, const RegionUnionOptions& options, std::vector<OccluderRegion>& pieces)
+{
+    const std::vector<Vec3>& positions = welder.positions();
+    const OccluderRegion& first = regions[members.front()];
+    const Vec3 n = canonicalNormal(first.normal, first.oneSided);
+    const Vec3 origin = positions[first.loop[0]];
+
+    Vec3 along(0.0);
+    Aabb extent;
+    if (!(longestEdgeDirection(regions, members, positions, n, along, extent) > 0.0))
+        return;
+    const Vec3 u = along, v = glm::cross(n, u);
+    // Only members truly in the plane: a piece must be as planar as its parts.
+    const double offPlane = 1e-10 * glm::length(extent.extent());
+
+    std::vector<UnionInput> inputs;
+    std::vector<std::uint32_t> inputRegion;
+    unionInputs(regions, members, positions, {origin, n, u, v}, offPlane, inputs, inputRegion);
+    if (inputs.size() < 2)
+        return;
+    PlanarUnionOptions unionOptions;
+    unionOptions.maxCorners = options.maxCorners;
+    const std::vector<UnionPiece> united = planarUnion(inputs, unionOptions);
+    if (united.empty())
+        return;
+
+    for (const UnionPiece& piece : united)
+    {
+        // A piece inside one input adds nothing (the two sides of a wall, an object's own
+        // pieces cut again); one straddling inputs hides what none of them hides alone.
+        if (piece.sources.size() < 2 || withinOneInput(piece, inputs))
+            continue;
+        OccluderRegion region;
+        region.normal = n;
+        region.oneSided = first.oneSided;
+        region.loop = weldedPieceLoop(piece, welder, options.sceneSize);
+        setPieceParts(piece, regions, inputRegion, region);
+        // Rounding may have bent a piece out of shape: then it is left out.
+        if (isConvexLoop(region.loop, positions, n, options.turnTolerance, options.planeTolerance,
+                         std::max<std::uint32_t>(options.maxCorners, std::uint32_t(region.loop.size()))))
+            pieces.push_back(std::move(region));
+    }
+}
+} // namespace
+
+void unitePlanarRegions(std::vector<OccluderRegion>& regions, VertexWelder& welder, const RegionUnionOptions& options)
+{
+    const std::map<PlaneKey, std::vector<std::uint32_t>> groups =
+        planeGroups(regions, welder.positions(), options.sceneSize);
 
     std::vector<OccluderRegion> pieces;
     for (const auto& [key, members] : groups)
     {
         if (members.size() < 2)
             continue;
-        const OccluderRegion& first = regions[members.front()];
-        const Vec3 n = canonicalNormal(first.normal, first.oneSided);
-        const Vec3 origin = positions[first.loop[0]];
-
-        // The slab direction follows the longest edge, so walls of axial rectangles cut into
-        // axial rectangles.
-        Vec3 along(0.0);
-        double longest = 0.0;
-        Aabb extent;
-        for (std::uint32_t r : members)
-        {
-            const auto& loop = regions[r].loop;
-            for (std::size_t i = 0; i < loop.size(); ++i)
-            {
-                const Vec3 e = positions[loop[(i + 1) % loop.size()]] - positions[loop[i]];
-                const Vec3 inPlane = e - glm::dot(e, n) * n;
-                const double length = glm::length(inPlane);
-                if (length > longest)
-                {
-                    longest = length;
-                    along = inPlane / length;
-                }
-                extent.expand(positions[loop[i]]);
-            }
-        }
-        if (!(longest > 0.0))
-            continue;
-        const Vec3 u = along, v = glm::cross(n, u);
-        // Only members truly in the plane: a piece must be as planar as its parts.
-        const double offPlane = 1e-10 * glm::length(extent.extent());
-
-        std::vector<UnionInput> inputs;
-        std::vector<std::uint32_t> inputRegion;
-        for (std::uint32_t r : members)
-        {
-            const OccluderRegion& region = regions[r];
-            UnionInput in;
-            bool planar = true;
-            for (std::uint32_t id : region.loop)
-            {
-                const Vec3 p = positions[id] - origin;
-                planar = planar && std::abs(glm::dot(p, n)) <= offPlane;
-                in.points.push_back({glm::dot(p, u), glm::dot(p, v)});
-                in.ids.push_back(id);
-            }
-            if (!planar)
-                continue;
-            if (glm::dot(region.normal, n) < 0.0)
-            {
-                std::reverse(in.points.begin(), in.points.end());
-                std::reverse(in.ids.begin(), in.ids.end());
-            }
-            inputs.push_back(std::move(in));
-            inputRegion.push_back(r);
-        }
-        if (inputs.size() < 2)
-            continue;
-        PlanarUnionOptions unionOptions;
-        unionOptions.maxCorners = options.maxCorners;
-        const std::vector<UnionPiece> united = planarUnion(inputs, unionOptions);
-        if (united.empty())
-            continue;
-
-        for (const UnionPiece& piece : united)
-        {
-            // A piece inside one input adds nothing (the two sides of a wall, an object's own
-            // pieces cut again); one straddling inputs hides what none of them hides alone.
-            if (piece.sources.size() < 2 || withinOneInput(piece, inputs))
-                continue;
-            OccluderRegion region;
-            region.normal = n;
-            region.oneSided = first.oneSided;
-            for (const UnionCorner& c : piece.corners)
-            {
-                std::uint32_t id = c.id;
-                if (id == NoUnionId)
-                {
-                    const Vec3 p = positions[c.from] + c.t * (positions[c.to] - positions[c.from]);
-                    id = welder.weld(p, 1e-12 * options.sceneSize);
-                }
-                if (region.loop.empty() || region.loop.back() != id)
-                    region.loop.push_back(id);
-            }
-            while (region.loop.size() > 1 && region.loop.front() == region.loop.back())
-                region.loop.pop_back();
-            for (std::uint32_t source : piece.sources)
-            {
-                // a source over several clusters of one drawable stands for all of them
-                const OccluderRegion& input = regions[inputRegion[source]];
-                if (input.parts.empty())
-                    region.parts.push_back(input.owner);
-                else
-                    region.parts.insert(region.parts.end(), input.parts.begin(), input.parts.end());
-            }
-            std::sort(region.parts.begin(), region.parts.end());
-            region.parts.erase(std::unique(region.parts.begin(), region.parts.end()), region.parts.end());
-            region.owner = region.parts.front();
-            if (region.parts.size() == 1)
-                region.parts.clear();
-            // Rounding may have bent a piece out of shape: then it is left out.
-            if (isConvexLoop(region.loop, positions, n, options.turnTolerance, options.planeTolerance,
-                             std::max<std::uint32_t>(options.maxCorners, std::uint32_t(region.loop.size()))))
-                pieces.push_back(std::move(region));
-        }
+        unitePlaneGroup(regions, members, welder, options, pieces);
     }
     if (pieces.empty())
         return;

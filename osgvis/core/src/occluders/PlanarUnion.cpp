@@ -116,18 +116,14 @@ UnionPiece pieceOf(const Chain& chain)
     piece.area = signedArea(outline);
     return piece;
 }
-} // namespace
 
-std::vector<UnionPiece> planarUnion(const std::vector<UnionInput>& inputs, const PlanarUnionOptions& options)
+// Each convex input splits into its lower chain (edges running +x, counter-clockwise) and
+// upper chain (running -x); vertical edges bound no slab's interval. Every vertex's x goes to
+// `xs`, and the vertices' bounds widen [lo, hi].
+std::vector<Chains> splitIntoChains(const std::vector<UnionInput>& inputs, std::vector<double>& xs, Point2& lo,
+                                    Point2& hi)
 {
-    if (inputs.empty() || inputs.size() > options.maxInputs)
-        return {};
-
-    // Each convex input splits into its lower chain (edges running +x, counter-clockwise) and
-    // upper chain (running -x); vertical edges bound no slab's interval.
     std::vector<Chains> chains(inputs.size());
-    std::vector<double> xs;
-    Point2 lo(1e300), hi(-1e300);
     for (std::size_t k = 0; k < inputs.size(); ++k)
     {
         const UnionInput& in = inputs[k];
@@ -153,8 +149,13 @@ std::vector<UnionPiece> planarUnion(const std::vector<UnionInput>& inputs, const
         std::sort(c.lower.begin(), c.lower.end(), byX);
         std::sort(c.upper.begin(), c.upper.end(), byX);
     }
-    // Where edges of different inputs cross, the union's boundary changes edge: a slab boundary
-    // there too, so within every slab no two edges cross and the union of intervals is exact.
+    return chains;
+}
+
+// Where edges of different inputs cross, the union's boundary changes edge: a slab boundary
+// there too, so within every slab no two edges cross and the union of intervals is exact.
+void addCrossings(const std::vector<Chains>& chains, std::vector<double>& xs)
+{
     std::vector<const Edge*> edges;
     std::vector<std::uint32_t> edgeInput;
     for (std::uint32_t k = 0; k < chains.size(); ++k)
@@ -179,27 +180,158 @@ std::vector<UnionPiece> planarUnion(const std::vector<UnionInput>& inputs, const
                     xs.push_back(x);
             }
         }
-    std::sort(xs.begin(), xs.end());
-    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
-    const double extent = glm::length(hi - lo);
-    // Rounding of the slab arithmetic, far below any raster's resolution; the gap is the caller's.
-    const double tolerance = options.gap + 1e-12 * extent;
+}
 
-    const auto spanning = [](const std::vector<Edge>& edges, double x0, double x1) -> const Edge*
+const Edge* spanningEdge(const std::vector<Edge>& edges, double x0, double x1)
+{
+    for (const Edge& e : edges)
+        if (e.a.x <= x0 && e.b.x >= x1)
+            return &e;
+    return nullptr;
+}
+
+// The active inputs' intervals across the slab [x0, x1] (xm its middle), those that do not close
+// there, sorted bottom to top.
+void slabSpans(const std::vector<Chains>& chains, const std::vector<std::uint32_t>& active, double x0, double x1,
+               double xm, std::vector<Span>& spans)
+{
+    spans.clear();
+    for (std::uint32_t k : active)
     {
-        for (const Edge& e : edges)
-            if (e.a.x <= x0 && e.b.x >= x1)
-                return &e;
-        return nullptr;
-    };
+        const Edge* l = spanningEdge(chains[k].lower, x0, x1);
+        const Edge* h = spanningEdge(chains[k].upper, x0, x1);
+        if (!l || !h)
+            continue;
+        Span span{l, h, yAt(*l, x0), yAt(*l, x1), yAt(*l, xm), yAt(*h, x0), yAt(*h, x1), yAt(*h, xm), k};
+        if (span.hiM > span.loM)
+            spans.push_back(span);
+    }
+    std::sort(spans.begin(), spans.end(),
+              [](const Span& a, const Span& b) {
+                  return a.loM < b.loM ||
+                         (a.loM == b.loM && (a.hiM < b.hiM || (a.hiM == b.hiM && a.source < b.source)));
+              });
+}
 
+// Join the intervals that overlap (or come within the gap) across the whole slab: each
+// joins one already in the group at both ends, so the union is one interval at every x.
+// Returns the end of the group starting at spans[i]; `top` is its highest interval (at the middle)
+// and `sources` gets the group's inputs.
+std::size_t joinedGroupEnd(const std::vector<Span>& spans, std::size_t i, double gap, const Span*& top,
+                           std::vector<std::uint32_t>& sources)
+{
+    std::size_t j = i + 1;
+    for (; j < spans.size(); ++j)
+    {
+        const Span& s2 = spans[j];
+        bool joins = false;
+        for (std::size_t m = i; m < j && !joins; ++m)
+            joins = s2.lo0 <= spans[m].hi0 + gap && s2.lo1 <= spans[m].hi1 + gap;
+        if (!joins)
+            break;
+        sources.push_back(s2.source);
+        if (s2.hiM > top->hiM)
+            top = &s2;
+    }
+    return j;
+}
+
+// A joined interval across the slab [x0, x1]: from lower edge `lo` (L0 at x0, L1 at x1) up to
+// upper edge `hi` (H0, H1).
+struct Trapezoid
+{
+    double x0, x1;
+    const Edge *lo, *hi;
+    double L0, L1, H0, H1;
+};
+
+// Continue a run from the previous slab when the sides meet and both boundaries stay
+// straight through every joint: the run of `open` that continues into `t`, its joints updated,
+// or null.
+Chain* continuedRun(std::vector<Chain>& open, const Trapezoid& t, double tolerance)
+{
+    for (Chain& c : open)
+    {
+        if (c.x1 != t.x0 || !(std::abs(c.L1 - t.L0) <= tolerance) || !(std::abs(c.H1 - t.H0) <= tolerance))
+            continue;
+        const Point2 loStart(c.x0, c.L0), hiStart(c.x0, c.H0), loEnd(t.x1, t.L1), hiEnd(t.x1, t.H1);
+        std::vector<Point2> loJoints = c.loJoints, hiJoints = c.hiJoints;
+        loJoints.emplace_back(t.x0, c.L1);
+        hiJoints.emplace_back(t.x0, c.H1);
+        if (!jointsOnChord(loJoints, loStart, loEnd, tolerance) || !jointsOnChord(hiJoints, hiStart, hiEnd, tolerance))
+            continue;
+        c.loJoints.swap(loJoints);
+        c.hiJoints.swap(hiJoints);
+        return &c;
+    }
+    return nullptr;
+}
+
+Chain startedRun(const Trapezoid& t, std::vector<std::uint32_t>& sources)
+{
+    Chain c;
+    c.x0 = t.x0;
+    c.x1 = t.x1;
+    c.firstLo = c.lastLo = t.lo;
+    c.firstHi = c.lastHi = t.hi;
+    c.L0 = t.L0;
+    c.H0 = t.H0;
+    c.L1 = t.L1;
+    c.H1 = t.H1;
+    c.sources = std::move(sources);
+    return c;
+}
+
+// The trapezoids of the slab [x0, x1] from its sorted `spans`, each continuing a run of `open`
+// (which is then marked taken) or starting one, into `next`.
+void joinSlab(const std::vector<Span>& spans, double x0, double x1, double gap, double tolerance,
+              std::vector<Chain>& open, std::vector<Chain>& next)
+{
+    for (std::size_t i = 0; i < spans.size();)
+    {
+        const Span& first = spans[i];
+        const Span* top = &first;
+        std::vector<std::uint32_t> sources{first.source};
+        i = joinedGroupEnd(spans, i, gap, top, sources);
+        // The lowest lower edge and the highest upper edge (at the middle) are each an edge of
+        // the union's interval's inputs, so the trapezoid between them lies in the union.
+        const double L0 = first.lo0, L1 = first.lo1, H0 = top->hi0, H1 = top->hi1;
+        if (!(H0 >= L0) || !(H1 >= L1) || !((H0 - L0) + (H1 - L1) > 0.0))
+            continue;
+        std::sort(sources.begin(), sources.end());
+        sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+
+        const Trapezoid trapezoid{x0, x1, first.lo, top->hi, L0, L1, H0, H1};
+        Chain* extended = continuedRun(open, trapezoid, tolerance);
+        if (extended)
+        {
+            extended->x1 = x1;
+            extended->lastLo = first.lo;
+            extended->lastHi = top->hi;
+            extended->L1 = L1;
+            extended->H1 = H1;
+            mergeSources(extended->sources, sources);
+            next.push_back(std::move(*extended));
+            extended->x1 = -1e300; // taken: not continued twice
+            continue;
+        }
+        next.push_back(startedRun(trapezoid, sources));
+    }
+}
+
+// The runs of trapezoids of every slab between consecutive `xs`, sweeping left to right with the
+// inputs whose x-range covers the slab.
+std::vector<Chain> sweepSlabs(const std::vector<Chains>& chains, const std::vector<double>& xs, double gap,
+                              double tolerance)
+{
     std::vector<Chain> done, open, next;
     std::vector<Span> spans;
-    std::vector<std::uint32_t> order(inputs.size());
+    std::vector<std::uint32_t> order(chains.size());
     for (std::uint32_t k = 0; k < order.size(); ++k)
         order[k] = k;
     std::sort(order.begin(), order.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return chains[a].minX < chains[b].minX || (chains[a].minX == chains[b].minX && a < b); });
+              [&](std::uint32_t a, std::uint32_t b)
+              { return chains[a].minX < chains[b].minX || (chains[a].minX == chains[b].minX && a < b); });
     std::vector<std::uint32_t> active;
     std::size_t nextInput = 0;
     for (std::size_t s = 0; s + 1 < xs.size(); ++s)
@@ -207,96 +339,13 @@ std::vector<UnionPiece> planarUnion(const std::vector<UnionInput>& inputs, const
         const double x0 = xs[s], x1 = xs[s + 1], xm = 0.5 * (x0 + x1);
         while (nextInput < order.size() && chains[order[nextInput]].minX <= x0)
             active.push_back(order[nextInput++]);
-        active.erase(std::remove_if(active.begin(), active.end(), [&](std::uint32_t k) { return chains[k].maxX <= x0; }),
-                     active.end());
+        active.erase(
+            std::remove_if(active.begin(), active.end(), [&](std::uint32_t k) { return chains[k].maxX <= x0; }),
+            active.end());
 
-        spans.clear();
-        for (std::uint32_t k : active)
-        {
-            const Edge* l = spanning(chains[k].lower, x0, x1);
-            const Edge* h = spanning(chains[k].upper, x0, x1);
-            if (!l || !h)
-                continue;
-            Span span{l, h, yAt(*l, x0), yAt(*l, x1), yAt(*l, xm), yAt(*h, x0), yAt(*h, x1), yAt(*h, xm), k};
-            if (span.hiM > span.loM)
-                spans.push_back(span);
-        }
-        std::sort(spans.begin(), spans.end(),
-                  [](const Span& a, const Span& b)
-                  { return a.loM < b.loM || (a.loM == b.loM && (a.hiM < b.hiM || (a.hiM == b.hiM && a.source < b.source))); });
-
-        // Join the intervals that overlap (or come within the gap) across the whole slab: each
-        // joins one already in the group at both ends, so the union is one interval at every x.
+        slabSpans(chains, active, x0, x1, xm, spans);
         next.clear();
-        for (std::size_t i = 0; i < spans.size();)
-        {
-            const Span& first = spans[i];
-            const Span* top = &first;
-            std::vector<std::uint32_t> sources{first.source};
-            std::size_t j = i + 1;
-            for (; j < spans.size(); ++j)
-            {
-                const Span& s2 = spans[j];
-                bool joins = false;
-                for (std::size_t m = i; m < j && !joins; ++m)
-                    joins = s2.lo0 <= spans[m].hi0 + options.gap && s2.lo1 <= spans[m].hi1 + options.gap;
-                if (!joins)
-                    break;
-                sources.push_back(s2.source);
-                if (s2.hiM > top->hiM)
-                    top = &s2;
-            }
-            i = j;
-            // The lowest lower edge and the highest upper edge (at the middle) are each an edge of
-            // the union's interval's inputs, so the trapezoid between them lies in the union.
-            const double L0 = first.lo0, L1 = first.lo1, H0 = top->hi0, H1 = top->hi1;
-            if (!(H0 >= L0) || !(H1 >= L1) || !((H0 - L0) + (H1 - L1) > 0.0))
-                continue;
-            std::sort(sources.begin(), sources.end());
-            sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
-
-            // Continue a run from the previous slab when the sides meet and both boundaries stay
-            // straight through every joint.
-            Chain* extended = nullptr;
-            for (Chain& c : open)
-            {
-                if (c.x1 != x0 || !(std::abs(c.L1 - L0) <= tolerance) || !(std::abs(c.H1 - H0) <= tolerance))
-                    continue;
-                const Point2 loStart(c.x0, c.L0), hiStart(c.x0, c.H0), loEnd(x1, L1), hiEnd(x1, H1);
-                std::vector<Point2> loJoints = c.loJoints, hiJoints = c.hiJoints;
-                loJoints.emplace_back(x0, c.L1);
-                hiJoints.emplace_back(x0, c.H1);
-                if (!jointsOnChord(loJoints, loStart, loEnd, tolerance) || !jointsOnChord(hiJoints, hiStart, hiEnd, tolerance))
-                    continue;
-                c.loJoints.swap(loJoints);
-                c.hiJoints.swap(hiJoints);
-                extended = &c;
-                break;
-            }
-            if (extended)
-            {
-                extended->x1 = x1;
-                extended->lastLo = first.lo;
-                extended->lastHi = top->hi;
-                extended->L1 = L1;
-                extended->H1 = H1;
-                mergeSources(extended->sources, sources);
-                next.push_back(std::move(*extended));
-                extended->x1 = -1e300; // taken: not continued twice
-                continue;
-            }
-            Chain c;
-            c.x0 = x0;
-            c.x1 = x1;
-            c.firstLo = c.lastLo = first.lo;
-            c.firstHi = c.lastHi = top->hi;
-            c.L0 = L0;
-            c.H0 = H0;
-            c.L1 = L1;
-            c.H1 = H1;
-            c.sources = std::move(sources);
-            next.push_back(std::move(c));
-        }
+        joinSlab(spans, x0, x1, gap, tolerance, open, next);
         for (Chain& c : open)
             if (c.x1 != -1e300)
                 done.push_back(std::move(c));
@@ -304,16 +353,30 @@ std::vector<UnionPiece> planarUnion(const std::vector<UnionInput>& inputs, const
     }
     for (Chain& c : open)
         done.push_back(std::move(c));
+    return done;
+}
 
-    std::vector<UnionPiece> pieces;
-    for (const Chain& c : done)
+// The piece covering `a` and `b` whose outline is `hull` (indices into a's corners, then b's);
+// `outline` gets its points.
+UnionPiece joinedPiece(const UnionPiece& a, const UnionPiece& b, const std::vector<std::size_t>& hull,
+                       Outline2& outline)
+{
+    UnionPiece merged;
+    for (std::size_t k : hull)
     {
-        UnionPiece piece = pieceOf(c);
-        if (piece.corners.size() >= 3 && piece.area > 0.0)
-            pieces.push_back(std::move(piece));
+        const UnionCorner& c = k < a.corners.size() ? a.corners[k] : b.corners[k - a.corners.size()];
+        merged.corners.push_back(c);
+        outline.push_back(c.point);
     }
+    merged.sources = a.sources;
+    mergeSources(merged.sources, b.sources);
+    merged.area = signedArea(outline);
+    return merged;
+}
 
-    // Pieces whose union is exactly convex join, largest first, until none can.
+// Pieces whose union is exactly convex join, largest first, until none can.
+void joinConvexPieces(std::vector<UnionPiece>& pieces, std::size_t maxCorners)
+{
     std::vector<Outline2> outlines(pieces.size());
     for (std::size_t i = 0; i < pieces.size(); ++i)
         for (const UnionCorner& c : pieces[i].corners)
@@ -324,21 +387,11 @@ std::vector<UnionPiece> planarUnion(const std::vector<UnionInput>& inputs, const
         for (std::size_t i = 0; i < pieces.size(); ++i)
             for (std::size_t j = i + 1; j < pieces.size(); ++j)
             {
-                const std::vector<std::size_t> hull = convexUnionIndices(outlines[i], outlines[j], options.maxCorners);
+                const std::vector<std::size_t> hull = convexUnionIndices(outlines[i], outlines[j], maxCorners);
                 if (hull.empty())
                     continue;
-                UnionPiece merged;
                 Outline2 outline;
-                for (std::size_t k : hull)
-                {
-                    const UnionCorner& c = k < pieces[i].corners.size() ? pieces[i].corners[k]
-                                                                        : pieces[j].corners[k - pieces[i].corners.size()];
-                    merged.corners.push_back(c);
-                    outline.push_back(c.point);
-                }
-                merged.sources = pieces[i].sources;
-                mergeSources(merged.sources, pieces[j].sources);
-                merged.area = signedArea(outline);
+                UnionPiece merged = joinedPiece(pieces[i], pieces[j], hull, outline);
                 pieces[i] = std::move(merged);
                 outlines[i] = std::move(outline);
                 pieces.erase(pieces.begin() + std::ptrdiff_t(j));
@@ -347,6 +400,34 @@ std::vector<UnionPiece> planarUnion(const std::vector<UnionInput>& inputs, const
                 joined = true;
             }
     }
+}
+} // namespace
+
+std::vector<UnionPiece> planarUnion(const std::vector<UnionInput>& inputs, const PlanarUnionOptions& options)
+{
+    if (inputs.empty() || inputs.size() > options.maxInputs)
+        return {};
+
+    std::vector<double> xs;
+    Point2 lo(1e300), hi(-1e300);
+    const std::vector<Chains> chains = splitIntoChains(inputs, xs, lo, hi);
+    addCrossings(chains, xs);
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    const double extent = glm::length(hi - lo);
+    // Rounding of the slab arithmetic, far below any raster's resolution; the gap is the caller's.
+    const double tolerance = options.gap + 1e-12 * extent;
+
+    // The runs point at the chains' edges, so `chains` outlives them.
+    const std::vector<Chain> done = sweepSlabs(chains, xs, options.gap, tolerance);
+    std::vector<UnionPiece> pieces;
+    for (const Chain& c : done)
+    {
+        UnionPiece piece = pieceOf(c);
+        if (piece.corners.size() >= 3 && piece.area > 0.0)
+            pieces.push_back(std::move(piece));
+    }
+    joinConvexPieces(pieces, options.maxCorners);
     return pieces;
 }
 } // namespace osgVis::core

@@ -126,6 +126,88 @@ void clearPlanes(BoxOccluderPlanes& out)
     out.hasSeparating.clear();
     out.boxSide = 0;
 }
+
+// Which side of the polygon's plane the box is on, beyond the tolerance: +1 front, -1 back, 0
+// touching or crossing it.
+int boxSideOf(const PreparedOccluder& polygon, const Aabb& box, double planeTolerance)
+{
+    const Vec3 boxExtent = box.extent();
+    const double sideTolerance =
+        2.0 * planeTolerance + RelativeSizeTolerance * glm::length(boxExtent); // > any start-point offset
+    double nearest = std::numeric_limits<double>::max(), farthest = std::numeric_limits<double>::lowest();
+    for (int corner = 0; corner < 8; ++corner)
+    {
+        const double distance = polygon.plane.distance(box.corner(corner));
+        nearest = std::min(nearest, distance);
+        farthest = std::max(farthest, distance);
+    }
+    return nearest > sideTolerance ? 1 : (farthest < -sideTolerance ? -1 : 0);
+}
+
+// The edge's candidate box corners in its cross-section: x along `inward`, y along `towardsBox`.
+void edgeSections(const PreparedOccluder::Edge& edge, const Aabb& box, const Vec3& towardsBox, Section points[8])
+{
+    for (int k = 0; k < edge.candidateCount; ++k)
+    {
+        const Vec3 w = box.corner(edge.candidates[k]) - edge.start;
+        points[k] = {glm::dot(w, edge.inward), glm::dot(w, towardsBox)};
+    }
+}
+
+// The box strictly on one side: edge i's supporting plane goes through the section point of the
+// largest angle, its separating plane through the smallest. False when a point is not above the
+// plane.
+bool setExtremePlanes(const PreparedOccluder::Edge& edge, const Vec3& towardsBox, const Section points[8],
+                      BoxOccluderPlanes& out, std::size_t i)
+{
+    const int candidates = edge.candidateCount;
+    // Every section point has an angle in (0, pi): compare angles by cross products.
+    int largest = 0, smallest = 0;
+    for (int k = 0; k < candidates; ++k)
+    {
+        if (!(points[k].y > 0.0))
+            return false;
+        if (cross2(points[largest], points[k]) > 0.0)
+            largest = k;
+        if (cross2(points[smallest], points[k]) < 0.0)
+            smallest = k;
+    }
+    out.supporting[i] = pencilPlane(edge.start, edge.inward, towardsBox, points[largest]);
+    out.separating[i] = pencilPlane(edge.start, edge.inward, towardsBox, points[smallest]);
+    out.hasSeparating[i] = 1;
+    return true;
+}
+
+// The box touches or crosses the polygon's plane. A separating plane of the pencil is
+// tangent to the box's section from the edge line; of the two tangents the one through a
+// point below the plane (y < 0) leaves the larger region to eyes in front, so it is
+// tried first, then the one above.
+void setTangentSeparatingPlane(const PreparedOccluder::Edge& edge, const Vec3& towardsBox, const Section points[8],
+                               BoxOccluderPlanes& out, std::size_t i)
+{
+    const int candidates = edge.candidateCount;
+    for (const double side : {-1.0, 1.0})
+    {
+        for (int k = 0; k < candidates && !out.hasSeparating[i]; ++k)
+        {
+            const Section p{points[k].x, side * points[k].y};
+            if (!(p.y > 0.0))
+                continue;
+            const double pLength = std::sqrt(p.x * p.x + p.y * p.y);
+            bool separates = true;
+            for (int j = 0; j < candidates && separates; ++j)
+            {
+                const Section q{points[j].x, side * points[j].y};
+                separates = cross2(q, p) <= 1e-12 * pLength * std::sqrt(q.x * q.x + q.y * q.y);
+            }
+            if (separates)
+            {
+                out.separating[i] = pencilPlane(edge.start, edge.inward, side * towardsBox, p);
+                out.hasSeparating[i] = 1;
+            }
+        }
+    }
+}
 } // namespace
 
 int silhouetteCorners(const Vec3& edgeDirection, int corners[8])
@@ -245,19 +327,7 @@ void computePlanes(const PreparedOccluder& polygon, const Aabb& box, BoxOccluder
         return; // not planar, or not convex (or not counter-clockwise)
     const Vec3& normal = polygon.normal;
     const std::size_t count = polygon.edges.size();
-
-    // Which side of the polygon's plane the box is on, beyond the tolerance.
-    const Vec3 boxExtent = box.extent();
-    const double sideTolerance =
-        2.0 * planeTolerance + RelativeSizeTolerance * glm::length(boxExtent); // > any start-point offset
-    double nearest = std::numeric_limits<double>::max(), farthest = std::numeric_limits<double>::lowest();
-    for (int corner = 0; corner < 8; ++corner)
-    {
-        const double distance = polygon.plane.distance(box.corner(corner));
-        nearest = std::min(nearest, distance);
-        farthest = std::max(farthest, distance);
-    }
-    const int boxSide = nearest > sideTolerance ? 1 : (farthest < -sideTolerance ? -1 : 0);
+    const int boxSide = boxSideOf(polygon, box, planeTolerance);
 
     // b points towards the box when it is on one side; otherwise it is the polygon's normal.
     const Vec3 towardsBox = boxSide < 0 ? -normal : normal;
@@ -275,62 +345,14 @@ void computePlanes(const PreparedOccluder& polygon, const Aabb& box, BoxOccluder
                 out.supporting[i] = alwaysSatisfiedPlane();
             continue;
         }
-        const Vec3& start = edge.start;
-        const Vec3& inward = edge.inward;
-        const int candidates = edge.candidateCount;
         Section points[8];
-        for (int k = 0; k < candidates; ++k)
+        edgeSections(edge, box, towardsBox, points);
+        if (boxSide == 0)
+            setTangentSeparatingPlane(edge, towardsBox, points, out, i);
+        else if (!setExtremePlanes(edge, towardsBox, points, out, i))
         {
-            const Vec3 w = box.corner(edge.candidates[k]) - start;
-            points[k] = {glm::dot(w, inward), glm::dot(w, towardsBox)};
-        }
-
-        if (boxSide != 0)
-        {
-            // Every section point has an angle in (0, pi): compare angles by cross products.
-            int largest = 0, smallest = 0;
-            for (int k = 0; k < candidates; ++k)
-            {
-                if (!(points[k].y > 0.0))
-                {
-                    clearPlanes(out); // cannot happen past sideTolerance; never decide on it
-                    return;
-                }
-                if (cross2(points[largest], points[k]) > 0.0)
-                    largest = k;
-                if (cross2(points[smallest], points[k]) < 0.0)
-                    smallest = k;
-            }
-            out.supporting[i] = pencilPlane(start, inward, towardsBox, points[largest]);
-            out.separating[i] = pencilPlane(start, inward, towardsBox, points[smallest]);
-            out.hasSeparating[i] = 1;
-            continue;
-        }
-
-        // The box touches or crosses the polygon's plane. A separating plane of the pencil is
-        // tangent to the box's section from the edge line; of the two tangents the one through a
-        // point below the plane (y < 0) leaves the larger region to eyes in front, so it is
-        // tried first, then the one above.
-        for (const double side : {-1.0, 1.0})
-        {
-            for (int k = 0; k < candidates && !out.hasSeparating[i]; ++k)
-            {
-                const Section p{points[k].x, side * points[k].y};
-                if (!(p.y > 0.0))
-                    continue;
-                const double pLength = std::sqrt(p.x * p.x + p.y * p.y);
-                bool separates = true;
-                for (int j = 0; j < candidates && separates; ++j)
-                {
-                    const Section q{points[j].x, side * points[j].y};
-                    separates = cross2(q, p) <= 1e-12 * pLength * std::sqrt(q.x * q.x + q.y * q.y);
-                }
-                if (separates)
-                {
-                    out.separating[i] = pencilPlane(start, inward, side * towardsBox, p);
-                    out.hasSeparating[i] = 1;
-                }
-            }
+            clearPlanes(out); // cannot happen past sideTolerance; never decide on it
+            return;
         }
     }
     out.boxSide = boxSide;

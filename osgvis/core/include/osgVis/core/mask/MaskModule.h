@@ -126,6 +126,26 @@ public:
     const OcclusionMask& mask() const;
 
 private:
+    // Phases of cull.
+    /// True while the marks of the alive critical frames hold for an eye at `eye` at walk time t
+    /// (drops the expired frames first).
+    bool aliveMarksHold(double t, const Vec3& eye);
+    /// Whether this frame is critical, and why; forgets the marks that no longer hold.
+    CriticalReason criticalReasonFor(const View& view);
+    /// The critical frame: occluders, mask, marks, and when the next one comes. False when the
+    /// projection allows no occlusion (the marks are forgotten).
+    bool runCriticalFrame(const View& view, CriticalReason reason);
+    /// The critical frame's occluder objects, the polygons to rasterize and the objects the marks
+    /// rest on.
+    void selectOccluders(const View& view);
+    /// Groups the selected polygons and rasterizes them into a fresh mask, the largest groups first
+    /// while the work budget lasts; what is left of the budget goes to marking.
+    void rasterizeOccluders(double nearDepth, double shift, Statistics& stats);
+    /// How long the marks just made hold, when the next critical frame comes, and the frame among
+    /// the alive ones.
+    void recordCriticalFrame(double t, const Vec3& eye);
+    /// Clears the moving objects hidden for an eye at `eye`; returns how many it cleared.
+    std::uint32_t cullMovingObjects(const Vec3& eye, VisibleSet& visible) const;
     /// True when the box lies behind the current mask (or out of its view) for every eye within
     /// `delta` of the critical eye (set on success); a box that is covered but not deep enough is
     /// halved up to `splits` times.
@@ -135,6 +155,7 @@ private:
     void fillTileDeltas(double shift);
     /// The critical frame's marking pass over the kd-tree, or over the renderer's traversal.
     void markHidden(Statistics& stats);
+    struct MarkPass; ///< one run of markHidden
     /// Clears what the marks hide at walk time t; returns how many it cleared.
     std::uint32_t applyTreeMarks(double t, VisibleSet& visible);
     std::uint32_t applyHierarchyMarks(double t, VisibleSet& visible);
