@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "RawScene.h"
 
+#include <osgVis/gltf/GltfAccessors.h>
+#include <osgVis/gltf/GltfError.h>
 #include <osgVis/visapi.h>
 
 #include <tiny_gltf.h>
@@ -8,7 +10,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 namespace osgVis::rawgl
@@ -137,112 +138,11 @@ void check(bool holds, const std::string& what)
         throw SceneError(what);
 }
 
-std::size_t componentBytes(int type)
-{
-    switch (type)
-    {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-        return 4;
-    default:
-        return 0;
-    }
-}
-
-// The checked bytes of an accessor: element i starts at data + i * stride. data is null for an
-// accessor without buffer view (all zeros).
-struct Elements
-{
-    const unsigned char* data = nullptr;
-    std::size_t count = 0, stride = 0, elementBytes = 0;
-};
-
-Elements elements(const tinygltf::Model& model, int index, const char* usage, int type, int componentType)
-{
-    const std::string name = "accessor " + std::to_string(index) + " (" + usage + ")";
-    check(index >= 0 && std::size_t(index) < model.accessors.size(), name + " does not exist");
-    const tinygltf::Accessor& accessor = model.accessors[std::size_t(index)];
-    check(!accessor.sparse.isSparse, name + " is sparse, which is not supported");
-    check(accessor.type == type,
-          name + " has type " + std::to_string(accessor.type) + ", expected " + std::to_string(type));
-    check(componentType < 0 || accessor.componentType == componentType,
-          name + " has component type " + std::to_string(accessor.componentType) + ", expected " +
-              std::to_string(componentType));
-    const std::size_t size = componentBytes(accessor.componentType);
-    check(size != 0, name + " has invalid component type " + std::to_string(accessor.componentType));
-    check(accessor.count <= (std::size_t(1) << 28), name + " has an implausible count");
-    Elements out;
-    out.count = accessor.count;
-    out.elementBytes = size * std::size_t(type == TINYGLTF_TYPE_SCALAR ? 1 : type == TINYGLTF_TYPE_VEC3 ? 3 : 4);
-    if (accessor.bufferView < 0)
-        return out;
-    check(std::size_t(accessor.bufferView) < model.bufferViews.size(),
-          name + ": no buffer view " + std::to_string(accessor.bufferView));
-    const tinygltf::BufferView& view = model.bufferViews[std::size_t(accessor.bufferView)];
-    check(view.buffer >= 0 && std::size_t(view.buffer) < model.buffers.size(),
-          name + ": its buffer view names no buffer");
-    const std::vector<unsigned char>& buffer = model.buffers[std::size_t(view.buffer)].data;
-    check(view.byteOffset <= buffer.size() && view.byteLength <= buffer.size() - view.byteOffset,
-          name + ": its buffer view reads past the end of its buffer");
-    out.stride = view.byteStride != 0 ? view.byteStride : out.elementBytes;
-    check(out.stride >= out.elementBytes, name + ": byte stride smaller than an element");
-    if (out.count > 0)
-    {
-        const bool strideFits = out.count == 1 || out.stride <= view.byteLength;
-        const std::size_t last = strideFits ? (out.count - 1) * out.stride : 0;
-        check(strideFits && accessor.byteOffset <= view.byteLength && last <= view.byteLength - accessor.byteOffset &&
-                  out.elementBytes <= view.byteLength - accessor.byteOffset - last,
-              name + " reads past the end of its buffer view");
-    }
-    out.data = buffer.data() + view.byteOffset + accessor.byteOffset;
-    return out;
-}
-
+// A VEC3 float accessor's values, three per element, read by the accessor reader the glTF plugin
+// uses (its GltfError becomes a SceneError in loadRawScene).
 std::vector<float> readVec3(const tinygltf::Model& model, int index, const char* usage)
 {
-    const Elements e = elements(model, index, usage, TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_FLOAT);
-    std::vector<float> values(3 * e.count, 0.0f);
-    if (e.data)
-        for (std::size_t i = 0; i < e.count; ++i)
-            std::memcpy(&values[3 * i], e.data + i * e.stride, 3 * sizeof(float));
-    return values;
-}
-
-std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int index, std::size_t vertexCount)
-{
-    const std::string name = "accessor " + std::to_string(index) + " (indices)";
-    const Elements e = elements(model, index, "indices", TINYGLTF_TYPE_SCALAR, -1);
-    const int type = model.accessors[std::size_t(index)].componentType;
-    check(type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-              type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
-          name + " is not unsigned byte, short or int");
-    std::vector<std::uint32_t> indices(e.count, 0);
-    if (!e.data)
-        return indices;
-    for (std::size_t i = 0; i < e.count; ++i)
-    {
-        const unsigned char* at = e.data + i * e.stride;
-        std::uint32_t value = 0;
-        if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE)
-            value = *at;
-        else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
-        {
-            std::uint16_t v16;
-            std::memcpy(&v16, at, 2);
-            value = v16;
-        }
-        else
-            std::memcpy(&value, at, 4);
-        check(value < vertexCount, name + ": index " + std::to_string(value) + " is out of range");
-        indices[i] = value;
-    }
-    return indices;
+    return gltf::readFloatAccessor(model, index, {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT}, usage).values;
 }
 
 // The corners of the triangles a triangle-mode primitive draws, three per triangle, in the order and
@@ -285,6 +185,172 @@ std::uint32_t materialFlags(const tinygltf::Material& material)
     if (!material.doubleSided)
         flags |= OSGVIS_OBJECT_CULL_BACK;
     return flags;
+}
+
+// A primitive's vertex attributes, in local coordinates, three floats per vertex.
+struct Vertices
+{
+    std::vector<float> positions;
+    std::vector<float> normals; // empty where the primitive has none
+    std::size_t count() const { return positions.size() / 3; }
+};
+
+Vertices readVertices(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const std::string& where)
+{
+    Vertices vertices;
+    const auto position = primitive.attributes.find("POSITION");
+    check(position != primitive.attributes.end(), where + " has no POSITION attribute");
+    vertices.positions = readVec3(model, position->second, "POSITION");
+    const auto normal = primitive.attributes.find("NORMAL");
+    if (normal != primitive.attributes.end())
+    {
+        vertices.normals = readVec3(model, normal->second, "NORMAL");
+        check(vertices.normals.size() == vertices.positions.size(), where + ": NORMAL and POSITION differ in count");
+    }
+    return vertices;
+}
+
+// The flags and base colour of the primitive's material.
+void applyMaterial(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const std::string& where,
+                   RawObject& out)
+{
+    tinygltf::Material material; // glTF's default material: opaque, one-sided, white
+    if (primitive.material >= 0)
+    {
+        check(std::size_t(primitive.material) < model.materials.size(),
+              where + " names material " + std::to_string(primitive.material) + ", which does not exist");
+        material = model.materials[std::size_t(primitive.material)];
+    }
+    out.flags = materialFlags(material);
+    const std::vector<double>& base = material.pbrMetallicRoughness.baseColorFactor;
+    for (std::size_t i = 0; i < 4 && i < base.size(); ++i)
+        out.color[i] = float(base[i]);
+}
+
+// The vertices drawn, in order: the index list, or every vertex for a primitive without one.
+std::vector<std::uint32_t> drawnVertices(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                         std::size_t vertexCount)
+{
+    std::vector<std::uint32_t> drawn;
+    if (primitive.indices >= 0)
+        drawn = gltf::readIndexAccessor(model, primitive.indices, vertexCount);
+    else
+        for (std::size_t i = 0; i < vertexCount; ++i)
+            drawn.push_back(std::uint32_t(i));
+    return drawn;
+}
+
+// Bounds over the vertices drawn (every vertex when none is), as the adapter's extraction, in world
+// coordinates through out.world.
+void addBounds(const std::vector<float>& positions, const std::vector<std::uint32_t>& drawn, RawObject& out)
+{
+    const std::size_t vertexCount = positions.size() / 3;
+    std::vector<bool> used(vertexCount, drawn.empty());
+    for (std::uint32_t i : drawn)
+        used[i] = true;
+    bool nonFinite = false;
+    for (std::size_t i = 0; i < vertexCount; ++i)
+    {
+        if (!used[i])
+            continue;
+        const double local[3] = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
+        double p[3];
+        transform(out.world, local, p);
+        if (!finite3(local) || !finite3(p))
+        {
+            nonFinite = true;
+            continue;
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+            out.boundsMin[c] = std::min(out.boundsMin[c], p[c]);
+            out.boundsMax[c] = std::max(out.boundsMax[c], p[c]);
+        }
+    }
+    if (nonFinite)
+        out.flags |= OSGVIS_OBJECT_ALWAYS_VISIBLE;
+}
+
+Topology topologyOf(int mode, const std::string& where)
+{
+    switch (mode)
+    {
+    case TINYGLTF_MODE_TRIANGLES:
+    case TINYGLTF_MODE_TRIANGLE_STRIP:
+    case TINYGLTF_MODE_TRIANGLE_FAN:
+        return Topology::Triangles;
+    case TINYGLTF_MODE_LINE:
+        return Topology::Lines;
+    case TINYGLTF_MODE_LINE_STRIP:
+        return Topology::LineStrip;
+    case TINYGLTF_MODE_LINE_LOOP:
+        return Topology::LineLoop;
+    case TINYGLTF_MODE_POINTS:
+        return Topology::Points;
+    default:
+        throw SceneError(where + " has unknown mode " + std::to_string(mode));
+    }
+}
+
+// The world corners of the triangle at corners[t], as floats; false where one is not finite.
+bool worldTriangle(const Matrix& world, const std::vector<float>& positions, const std::vector<std::uint32_t>& corners,
+                   std::size_t t, float w[9])
+{
+    bool finite = true;
+    for (int k = 0; k < 3; ++k)
+    {
+        const std::uint32_t i = corners[t + std::size_t(k)];
+        const double local[3] = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
+        double p[3];
+        transform(world, local, p);
+        finite = finite && finite3(p);
+        for (int c = 0; c < 3; ++c)
+            w[3 * k + c] = float(p[c]);
+    }
+    return finite;
+}
+
+// The normal of the triangle at corners[t], not normalised: what a primitive without normals is lit by.
+void faceNormal(const std::vector<float>& positions, const std::vector<std::uint32_t>& corners, std::size_t t,
+                float normal[3])
+{
+    const float* a = &positions[3 * corners[t]];
+    const float* b = &positions[3 * corners[t + 1]];
+    const float* c = &positions[3 * corners[t + 2]];
+    const float u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const float v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    normal[0] = u[1] * v[2] - u[2] * v[1];
+    normal[1] = u[2] * v[0] - u[0] * v[2];
+    normal[2] = u[0] * v[1] - u[1] * v[0];
+}
+
+// A triangle-mode primitive's world triangles (for culling) and the corners it draws with their normals.
+void addTriangles(int mode, const Vertices& vertices, const std::vector<std::uint32_t>& drawn, RawObject& out)
+{
+    const std::vector<float>& positions = vertices.positions;
+    const std::vector<float>& normals = vertices.normals;
+    const std::vector<std::uint32_t> corners = triangleCorners(mode, drawn);
+    for (std::size_t t = 0; t + 2 < corners.size(); t += 3)
+    {
+        float w[9];
+        // note: a triangle with a non-finite corner is neither kept for culling nor drawn; its
+        // object is always visible (the bounds pass flagged it).
+        if (!worldTriangle(out.world, positions, corners, t, w))
+            continue;
+        out.worldTriangles.insert(out.worldTriangles.end(), w, w + 9);
+        float normal[3] = {0, 0, 0};
+        if (normals.empty())
+            faceNormal(positions, corners, t, normal);
+        for (int k = 0; k < 3; ++k)
+        {
+            const std::uint32_t i = corners[t + std::size_t(k)];
+            out.positions.insert(out.positions.end(), &positions[3 * i], &positions[3 * i] + 3);
+            if (normals.empty())
+                out.normals.insert(out.normals.end(), normal, normal + 3);
+            else
+                out.normals.insert(out.normals.end(), &normals[3 * i], &normals[3 * i] + 3);
+        }
+    }
 }
 
 class Flattener
@@ -341,135 +407,18 @@ private:
         RawObject out;
         out.identity = identity;
         out.world = world;
-        const auto position = primitive.attributes.find("POSITION");
-        check(position != primitive.attributes.end(), where + " has no POSITION attribute");
-        const std::vector<float> positions = readVec3(_model, position->second, "POSITION");
-        const std::size_t vertexCount = positions.size() / 3;
-        std::vector<float> normals;
-        const auto normal = primitive.attributes.find("NORMAL");
-        if (normal != primitive.attributes.end())
-        {
-            normals = readVec3(_model, normal->second, "NORMAL");
-            check(normals.size() == positions.size(), where + ": NORMAL and POSITION differ in count");
-        }
-
-        tinygltf::Material material; // glTF's default material: opaque, one-sided, white
-        if (primitive.material >= 0)
-        {
-            check(std::size_t(primitive.material) < _model.materials.size(),
-                  where + " names material " + std::to_string(primitive.material) + ", which does not exist");
-            material = _model.materials[std::size_t(primitive.material)];
-        }
-        out.flags = materialFlags(material);
-        const std::vector<double>& base = material.pbrMetallicRoughness.baseColorFactor;
-        for (std::size_t i = 0; i < 4 && i < base.size(); ++i)
-            out.color[i] = float(base[i]);
-
-        // The vertices drawn, in order: the index list, or every vertex for a primitive without one.
-        std::vector<std::uint32_t> drawn;
-        if (primitive.indices >= 0)
-            drawn = readIndices(_model, primitive.indices, vertexCount);
-        else
-            for (std::size_t i = 0; i < vertexCount; ++i)
-                drawn.push_back(std::uint32_t(i));
-
-        // Bounds over the vertices drawn (every vertex when none is), as the adapter's extraction.
-        std::vector<bool> used(vertexCount, drawn.empty());
-        for (std::uint32_t i : drawn)
-            used[i] = true;
-        bool nonFinite = false;
-        for (std::size_t i = 0; i < vertexCount; ++i)
-        {
-            if (!used[i])
-                continue;
-            const double local[3] = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
-            double p[3];
-            transform(world, local, p);
-            if (!finite3(local) || !finite3(p))
-            {
-                nonFinite = true;
-                continue;
-            }
-            for (int c = 0; c < 3; ++c)
-            {
-                out.boundsMin[c] = std::min(out.boundsMin[c], p[c]);
-                out.boundsMax[c] = std::max(out.boundsMax[c], p[c]);
-            }
-        }
-        if (nonFinite)
-            out.flags |= OSGVIS_OBJECT_ALWAYS_VISIBLE;
-
-        switch (primitive.mode)
-        {
-        case TINYGLTF_MODE_TRIANGLES:
-        case TINYGLTF_MODE_TRIANGLE_STRIP:
-        case TINYGLTF_MODE_TRIANGLE_FAN:
-            out.topology = Topology::Triangles;
-            break;
-        case TINYGLTF_MODE_LINE:
-            out.topology = Topology::Lines;
-            break;
-        case TINYGLTF_MODE_LINE_STRIP:
-            out.topology = Topology::LineStrip;
-            break;
-        case TINYGLTF_MODE_LINE_LOOP:
-            out.topology = Topology::LineLoop;
-            break;
-        case TINYGLTF_MODE_POINTS:
-            out.topology = Topology::Points;
-            break;
-        default:
-            throw SceneError(where + " has unknown mode " + std::to_string(primitive.mode));
-        }
+        const Vertices vertices = readVertices(_model, primitive, where);
+        applyMaterial(_model, primitive, where, out);
+        const std::vector<std::uint32_t> drawn = drawnVertices(_model, primitive, vertices.count());
+        addBounds(vertices.positions, drawn, out);
+        out.topology = topologyOf(primitive.mode, where);
         if (out.topology != Topology::Triangles)
         {
             for (std::uint32_t i : drawn)
-                out.positions.insert(out.positions.end(), &positions[3 * i], &positions[3 * i] + 3);
+                out.positions.insert(out.positions.end(), &vertices.positions[3 * i], &vertices.positions[3 * i] + 3);
             return out;
         }
-
-        const std::vector<std::uint32_t> corners = triangleCorners(primitive.mode, drawn);
-        for (std::size_t t = 0; t + 2 < corners.size(); t += 3)
-        {
-            float w[9];
-            bool finite = true;
-            for (int k = 0; k < 3; ++k)
-            {
-                const std::uint32_t i = corners[t + std::size_t(k)];
-                const double local[3] = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
-                double p[3];
-                transform(world, local, p);
-                finite = finite && finite3(p);
-                for (int c = 0; c < 3; ++c)
-                    w[3 * k + c] = float(p[c]);
-            }
-            // note: a triangle with a non-finite corner is neither kept for culling nor drawn; its
-            // object is always visible (the bounds pass flagged it).
-            if (!finite)
-                continue;
-            out.worldTriangles.insert(out.worldTriangles.end(), w, w + 9);
-            float faceNormal[3] = {0, 0, 0};
-            if (normals.empty())
-            {
-                const float* a = &positions[3 * corners[t]];
-                const float* b = &positions[3 * corners[t + 1]];
-                const float* c = &positions[3 * corners[t + 2]];
-                const float u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-                const float v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-                faceNormal[0] = u[1] * v[2] - u[2] * v[1];
-                faceNormal[1] = u[2] * v[0] - u[0] * v[2];
-                faceNormal[2] = u[0] * v[1] - u[1] * v[0];
-            }
-            for (int k = 0; k < 3; ++k)
-            {
-                const std::uint32_t i = corners[t + std::size_t(k)];
-                out.positions.insert(out.positions.end(), &positions[3 * i], &positions[3 * i] + 3);
-                if (normals.empty())
-                    out.normals.insert(out.normals.end(), faceNormal, faceNormal + 3);
-                else
-                    out.normals.insert(out.normals.end(), &normals[3 * i], &normals[3 * i] + 3);
-            }
-        }
+        addTriangles(primitive.mode, vertices, drawn, out);
         return out;
     }
 
@@ -549,6 +498,10 @@ RawScene loadRawScene(const std::string& path)
             scene.rootNodes.push_back(flattener.node(node, root, ""));
     }
     catch (const SceneError& e)
+    {
+        throw SceneError(path + ": " + e.what());
+    }
+    catch (const gltf::GltfError& e) // from the shared accessor reader, in its words
     {
         throw SceneError(path + ": " + e.what());
     }

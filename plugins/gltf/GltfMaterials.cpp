@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "GltfMaterials.h"
 
-#include "GltfAccessors.h"
-#include "GltfError.h"
 #include "GltfImages.h"
+
+#include <osgVis/gltf/GltfAccessors.h>
+#include <osgVis/gltf/GltfError.h>
 
 #include <osg/AlphaFunc>
 #include <osg/BlendFunc>
@@ -14,6 +15,10 @@
 
 namespace osgVis::gltfplugin
 {
+using gltf::bufferViewBytes;
+using gltf::ByteRange;
+using gltf::checkReference;
+
 namespace
 {
 osg::Texture::WrapMode wrapMode(int gltfWrap)

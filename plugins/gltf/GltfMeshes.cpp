@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "GltfMeshes.h"
 
-#include "GltfAccessors.h"
-#include "GltfError.h"
+#include <osgVis/gltf/GltfAccessors.h>
+#include <osgVis/gltf/GltfError.h>
 
 #include <osg/Geometry>
 #include <osg/ValueObject>
@@ -13,6 +13,12 @@
 
 namespace osgVis::gltfplugin
 {
+using gltf::checkReference;
+using gltf::FloatElements;
+using gltf::GltfError;
+using gltf::readFloatAccessor;
+using gltf::readIndexAccessor;
+
 namespace
 {
 const std::vector<int> floatOnly{TINYGLTF_COMPONENT_TYPE_FLOAT};

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "GltfParse.h"
 
-#include "GltfError.h"
+#include <osgVis/gltf/GltfError.h>
 
 #include <osg/Notify>
 #include <osgDB/FileUtils>
@@ -14,6 +14,8 @@
 
 namespace osgVis::gltfplugin
 {
+using gltf::GltfError;
+
 namespace
 {
 // tinygltf's file system callbacks over osgDB: a path that does not exist as joined is looked up

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "GltfScene.h"
 
-#include "GltfError.h"
 #include "GltfMaterials.h"
 #include "GltfMeshes.h"
+
+#include <osgVis/gltf/GltfError.h>
 
 #include <osg/MatrixTransform>
 #include <osg/ValueObject>
@@ -13,6 +14,9 @@
 
 namespace osgVis::gltfplugin
 {
+using gltf::checkReference;
+using gltf::GltfError;
+
 namespace
 {
 osg::Matrixd nodeMatrix(const tinygltf::Node& node, int nodeIndex)

@@ -19,9 +19,10 @@
 // pager threads may read at once.
 //
 // `.glb` reaches this plugin through osgdb_glb, a link to this module (OSG looks for osgdb_<ext>).
-#include "GltfError.h"
 #include "GltfParse.h"
 #include "GltfScene.h"
+
+#include <osgVis/gltf/GltfError.h>
 
 #include <osg/MatrixTransform>
 #include <osgDB/FileNameUtils>
@@ -35,6 +36,8 @@
 
 namespace osgVis::gltfplugin
 {
+using gltf::GltfError;
+
 namespace
 {
 bool hasOption(const osgDB::Options* options, const std::string& word)

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: MIT
-#include "GltfAccessors.h"
+// The validated glTF accessor reader shared by the osgdb_gltf plugin and osgvisrawgl.
+#include <osgVis/gltf/GltfAccessors.h>
 
-#include "GltfError.h"
+#include <osgVis/gltf/GltfError.h>
 
 #include <algorithm>
 #include <cstring>
 #include <limits>
 #include <string>
 
-namespace osgVis::gltfplugin
+namespace osgVis::gltf
 {
 namespace
 {
@@ -197,6 +198,10 @@ std::vector<std::uint32_t> readIndexAccessor(const tinygltf::Model& model, int a
         throw GltfError(accessorName(accessorIndex) + " (indices) has component type " +
                         std::to_string(view.componentType) + ", expected unsigned byte, short or int");
     std::vector<std::uint32_t> indices(view.count, 0);
+    // note: an accessor without buffer view reads as zeros, which must still name a vertex
+    if (!view.data && view.count != 0 && vertexCount == 0)
+        throw GltfError("index 0 at position 0 of " + accessorName(accessorIndex) +
+                        " is out of range (the primitive has 0 vertices)");
     if (!view.data)
         return indices;
     for (std::size_t i = 0; i < view.count; ++i)
@@ -214,4 +219,4 @@ std::vector<std::uint32_t> readIndexAccessor(const tinygltf::Model& model, int a
     }
     return indices;
 }
-} // namespace osgVis::gltfplugin
+} // namespace osgVis::gltf

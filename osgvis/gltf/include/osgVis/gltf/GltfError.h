@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// What is wrong with a glTF model, in words; the reader prefixes "gltf: <file>: " and hands it to
-// osgDB as the ReadResult's message.
+// What is wrong with a glTF model, in words: thrown by the shared accessor reader (GltfAccessors.h)
+// and by the osgdb_gltf plugin, which prefixes "gltf: <file>: " and hands it to osgDB as the
+// ReadResult's message; osgvisrawgl turns it into its SceneError.
 #include <cstddef>
 #include <stdexcept>
 #include <string>
 
-namespace osgVis::gltfplugin
+namespace osgVis::gltf
 {
 struct GltfError : public std::runtime_error
 {
@@ -21,4 +22,4 @@ inline void checkReference(const std::string& referrer, const char* kind, int in
         throw GltfError(referrer + " refers to " + kind + " " + std::to_string(index) + ", but there are " +
                         std::to_string(count));
 }
-} // namespace osgVis::gltfplugin
+} // namespace osgVis::gltf

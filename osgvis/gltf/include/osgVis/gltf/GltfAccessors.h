@@ -3,12 +3,13 @@
 // Validated reading of glTF accessors: the accessor, its buffer view and buffer, the component
 // type, the element count and stride are all checked against the bytes that exist before any is
 // read, so a malformed file gives a GltfError naming the accessor, never an out-of-range read.
+// Shared by the osgdb_gltf plugin and osgvisrawgl (tinygltf only, no OSG).
 #include <tiny_gltf.h>
 
 #include <cstdint>
 #include <vector>
 
-namespace osgVis::gltfplugin
+namespace osgVis::gltf
 {
 // An accessor's elements as floats, `components` per element (normalized integer types are mapped
 // to [0,1] / [-1,1] as glTF specifies). `componentTypes` lists the accepted TINYGLTF_COMPONENT_TYPE_*
@@ -34,4 +35,4 @@ struct ByteRange
     std::size_t size = 0;
 };
 ByteRange bufferViewBytes(const tinygltf::Model& model, int bufferViewIndex);
-} // namespace osgVis::gltfplugin
+} // namespace osgVis::gltf
