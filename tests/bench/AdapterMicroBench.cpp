@@ -11,6 +11,7 @@
 // skipped when absent).
 //
 //   osgvis_adapter_microbench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include "BoxGeometry.h"
 #include <osgVis/CullVisitor>
 #include <osgVis/VisibilityGroup>
 
@@ -28,18 +29,7 @@
 
 namespace
 {
-osg::ref_ptr<osg::Geometry> box(const osg::Vec3& lo, const osg::Vec3& hi)
-{
-    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
-    for (int i = 0; i < 8; ++i)
-        v->push_back(osg::Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z()));
-    const GLushort faces[] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
-                              2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
-    osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
-    geometry->setVertexArray(v);
-    geometry->addPrimitiveSet(new osg::DrawElementsUShort(GL_TRIANGLES, 36, faces));
-    return geometry;
-}
+using osgVis::bench::boxGeometry;
 
 // 1 000 groups of ten geodes of one box each, on a 100 × 100 grid 4 units apart.
 osg::ref_ptr<osg::Group> generatedContent()
@@ -53,7 +43,7 @@ osg::ref_ptr<osg::Group> generatedContent()
             const int index = g * 10 + i;
             const osg::Vec3 at(float(index % 100) * 4 - 200, float(index / 100) * 4 - 200, 0);
             osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-            geode->addDrawable(box(at, at + osg::Vec3(2, 2, 2 + float(index % 7))));
+            geode->addDrawable(boxGeometry(at, at + osg::Vec3(2, 2, 2 + float(index % 7))));
             group->addChild(geode);
         }
         content->addChild(group);

@@ -7,6 +7,7 @@
 // BM_WatchMovingReextracted is the way every change was applied before matrices alone were.
 //
 //   osgvis_change_microbench --benchmark_filter=Watch   (figures in docs/changes.md)
+#include "BoxGeometry.h"
 #include "Extraction.h"
 #include "SceneWatch.h"
 
@@ -22,18 +23,7 @@
 
 namespace
 {
-osg::ref_ptr<osg::Geometry> box(const osg::Vec3& lo, const osg::Vec3& hi)
-{
-    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
-    for (int i = 0; i < 8; ++i)
-        v->push_back(osg::Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z()));
-    const GLushort faces[] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
-                              2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
-    osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
-    geometry->setVertexArray(v);
-    geometry->addPrimitiveSet(new osg::DrawElementsUShort(GL_TRIANGLES, 36, faces));
-    return geometry;
-}
+using osgVis::bench::boxGeometry;
 
 struct City
 {
@@ -53,7 +43,7 @@ struct City
             }
             osg::ref_ptr<osg::Geode> geode = new osg::Geode;
             const osg::Vec3 at(float(i % 100) * 4, float(i / 100) * 4, 0);
-            geode->addDrawable(box(at, at + osg::Vec3(2, 2, 2 + i % 7)));
+            geode->addDrawable(boxGeometry(at, at + osg::Vec3(2, 2, 2 + i % 7)));
             osg::ref_ptr<osg::MatrixTransform> transform = new osg::MatrixTransform;
             transform->addChild(geode);
             block->addChild(transform);
