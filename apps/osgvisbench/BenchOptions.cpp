@@ -100,7 +100,10 @@ core::AsyncOptions asyncOptionsOf(const BenchOptions& options)
     return async;
 }
 
-std::string benchUsage()
+namespace
+{
+// benchUsage()'s text, in sections. The synopsis: every option.
+const char* usageSynopsis()
 {
     return "usage: osgvisbench (--scene FILE | --generate office|city|floor|tetra|forest [--layout L]\n"
            "                   [--triangles N] [--seed S])\n"
@@ -117,8 +120,13 @@ std::string benchUsage()
            "                   [--json OUT.json] [--report DIR [--pictures N]] [--explain] [--backoff on|off]\n"
            "                   [--oracle-cache DIR]\n"
            "                   [--dump-visible DIR] [--clusters on|off|N]\n"
-           "                   [--help]\n"
-           "\n"
+           "                   [--help]\n";
+}
+
+// What the bench does, and the walk's options.
+const char* usageOverviewAndWalkOptions()
+{
+    return "\n"
            "Renders every mode over the same walk in one process and measures it against the\n"
            "exact-visibility oracle (docs/benchmark.md). A module chain is written with '+'; a name\n"
            "osgVis lacks loads the plugin osgvis_module_<name>.so from OSGVIS_MODULE_PATH or\n"
@@ -139,8 +147,13 @@ std::string benchUsage()
            "  ids otherwise). No rendering; osgvisrawgl writes the same files from its own loader\n"
            "  (docs/visapi.md, \"A renderer that is not OSG\").\n"
            "--cube: every walk key becomes six 90-degree square views (HxH, H the walk's height),\n"
-           "  the faces of a cube around the eye, so every metric covers the full sphere.\n"
-           "--speeds, --threads: also time each module-chain mode's cull alone (no rendering) with\n"
+           "  the faces of a cube around the eye, so every metric covers the full sphere.\n";
+}
+
+// The cull-only sweeps.
+const char* usageSweepOptions()
+{
+    return "--speeds, --threads: also time each module-chain mode's cull alone (no rendering) with\n"
            "  the observer S times faster (every S-th walk key) under T TBB threads, and check that\n"
            "  every thread count gives the same visible sets. A missing list means speed 1 or\n"
            "  TBB's default thread count.\n"
@@ -156,8 +169,13 @@ std::string benchUsage()
            "  (default 1): K-1 frames between consecutive views, the eye moved linearly with the\n"
            "  earlier view's orientation, at the views' own time step, so consecutive frames are\n"
            "  close and the masks' temporal coherence shows. At most 200000 frames (views x K).\n"
-           "--cull-only: run just these sweeps (no oracle, no GL).\n"
-           "--dynamic: a dynamic walk (osg and module-chain modes): 12 cars drive along the walk's\n"
+           "--cull-only: run just these sweeps (no oracle, no GL).\n";
+}
+
+// The dynamic walk and the paged database.
+const char* usageDynamicAndPagedOptions()
+{
+    return "--dynamic: a dynamic walk (osg and module-chain modes): 12 cars drive along the walk's\n"
            "  streets every frame, 3 buildings are dropped on existing ones at 1/4 and at 1/2 of\n"
            "  the views, 3 are deleted at 1/3 and at 2/3 (seeded by --seed); the oracle renders\n"
            "  every frame's scene, and the number of changes applied is printed.\n"
@@ -177,8 +195,13 @@ std::string benchUsage()
            "  --paging-keep-mb M: and within M MB of their geometry's arrays (default 0: no limit).\n"
            "  --paging-prefetch N: tiles the eye will pass through within N frames at its last step are\n"
            "  requested ahead at a lower priority (default 0: off), and with a baked cellportal\n"
-           "  PVS the tiles some eye along that path may see.\n"
-           "--threading M1,M2 / --async on,off: also render every osg and module-chain mode under each\n"
+           "  PVS the tiles some eye along that path may see.\n";
+}
+
+// The threading table.
+const char* usageThreadingOptions()
+{
+    return "--threading M1,M2 / --async on,off: also render every osg and module-chain mode under each\n"
            "  OSG threading model (SingleThreaded, CullDrawThreadPerContext, DrawThreadPerContext,\n"
            "  CullThreadPerCameraDrawThreadPerContext; default SingleThreaded) with asynchronous\n"
            "  visibility on and/or off (default off), and print the threading table: false-invisible,\n"
@@ -188,8 +211,13 @@ std::string benchUsage()
            "  LP_NUM_THREADS (Mesa) when timing: llvmpipe's threads compete for the same cores.\n"
            "--async-lookahead N: frames of predicted eye path an async region covers (default 4).\n"
            "--async-region X,Y,Z: an async region is at least this box around the eye (a bake\n"
-           "  cell's size, for multifocal regions); default: the path alone.\n"
-           "--volume X0,Y0,Z0,X1,Y1,Z1 | paper: instead of the walk, the multifocal volume PVS of that\n"
+           "  cell's size, for multifocal regions); default: the path alone.\n";
+}
+
+// The volume PVS and the baked cells against the volume oracle.
+const char* usageVolumeOptions()
+{
+    return "--volume X0,Y0,Z0,X1,Y1,Z1 | paper: instead of the walk, the multifocal volume PVS of that\n"
            "  box of eyes (paper: the view volume of the generated forest's layout, docs/scenes.md),\n"
            "  timed (median of --volume-repeat N, default 3), against the volume oracle (eyes at the\n"
            "  box's 8 corners, 6 face centres and --volume-eyes N (default 48) random points, six\n"
@@ -200,8 +228,13 @@ std::string benchUsage()
            "--volume-cells N: with --scene FILE.pvs baked by osgvispvs --method multifocal, N of its\n"
            "  view cells (evenly spread over them) against the volume oracle (objects): objects the\n"
            "  oracle sees that a cell's PVS lacks (exit status 1 when any), and the triangles of the\n"
-           "  PVS's objects over those of the objects seen, per cell and on average.\n"
-           "--report DIR: also write DIR/index.html, one self-contained page (inline SVG, nothing\n"
+           "  PVS's objects over those of the objects seen, per cell and on average.\n";
+}
+
+// The report, the oracle cache and --explain.
+const char* usageOutputOptions()
+{
+    return "--report DIR: also write DIR/index.html, one self-contained page (inline SVG, nothing\n"
            "  fetched): the table, per-view plots of drawn triangles for every mode against exact and of\n"
            "  cull ms, false-invisible markers, the progressive and threading tables, and N side-by-side\n"
            "  pictures DIR/view-NNNN.png (--pictures N, default 6, 0 for none) of views spread over the\n"
@@ -215,190 +248,282 @@ std::string benchUsage()
            "  are no occluder, by reason (transparent, alpha test, polygon mode, no depth write, under\n"
            "  LOD/Switch, dynamic, degenerate, too small, ...), the occluder polygons the object-space\n"
            "  methods get, objects whose bounds span more than half the model, and the objects the\n"
-           "  best mode never culled although hidden, largest first, with the likeliest reason.\n"
-           "--clusters on|off|N: split drawables of at least N triangles (on: the default, 4096) into\n"
+           "  best mode never culled although hidden, largest first, with the likeliest reason.\n";
+}
+
+// How the modes cull: clusters, back-off.
+const char* usageCullingOptions()
+{
+    return "--clusters on|off|N: split drawables of at least N triangles (on: the default, 4096) into\n"
            "  clusters culled as objects (docs/clusters.md); off keeps every drawable whole. Sets\n"
            "  OSGVIS_CLUSTER_THRESHOLD for every extraction of the run. With clusters the oracle's\n"
            "  objects are narrowed to clusters by a triangle-ID render.\n"
            "--backoff on: measure the modes as an application with do no harm gets them: each\n"
            "  VisibilityGroup times frames with and without its chain and skips the chain where it\n"
            "  costs more than it saves (core::BackOff; timing-dependent, so off by default: each\n"
-           "  method is measured alone).\n"
-           "Every rendered mode also gets its mis-drawn pixels: pixels of the oracle's exact image\n"
+           "  method is measured alone).\n";
+}
+
+// What every rendered mode is measured on, and the exit status.
+const char* usageExitStatus()
+{
+    return "Every rendered mode also gets its mis-drawn pixels: pixels of the oracle's exact image\n"
            "  (display resolution) showing an object the mode culled (where the oracle counts\n"
            "  pixels per object). Approximate modes report false-invisible objects, never fail.\n"
            "Exit status: 0 ok, 1 a conservative mode culled a visible object, gave different\n"
            "visible sets at different thread counts or threading models, or the run failed;\n"
            "2 bad command line.\n";
 }
+} // namespace
 
-BenchOptions parseBenchOptions(int argc, char** argv)
+std::string benchUsage()
 {
-    BenchOptions options;
-    options.modes = {"osg", "frustum", "exact"};
-    for (int i = 0; i < argc; ++i)
-        options.commandLine += (i ? " " : "") + quotedArgument(argv[i]);
+    return std::string(usageSynopsis()) + usageOverviewAndWalkOptions() + usageSweepOptions() +
+           usageDynamicAndPagedOptions() + usageThreadingOptions() + usageVolumeOptions() + usageOutputOptions() +
+           usageCullingOptions() + usageExitStatus();
+}
 
-    for (int i = 1; i < argc; ++i)
+namespace
+{
+// The argument being parsed; value() takes the next one as its value.
+struct Argument
+{
+    int argc;
+    char** argv;
+    int index;
+    std::string flag;
+
+    std::string value()
     {
-        const std::string flag = argv[i];
-        auto value = [&]() -> std::string
-        {
-            if (i + 1 >= argc)
-                throw UsageError(flag + " needs a value");
-            return argv[++i];
-        };
-        if (flag == "--help" || flag == "-h")
-            options.help = true;
-        else if (flag == "--scene")
-            options.sceneFile = value();
-        else if (flag == "--generate")
-            options.generateKind = value();
-        else if (flag == "--layout")
-            options.forestLayout = value();
-        else if (flag == "--triangles")
-            options.triangles = parseUnsigned(flag, value());
-        else if (flag == "--seed")
-            options.seed = std::uint32_t(parseUnsigned(flag, value()));
-        else if (flag == "--walk")
-            options.walkFile = value();
-        else if (flag == "--save-walk")
-            options.saveWalkFile = value();
-        else if (flag == "--dump-visible")
-            options.dumpVisibleDir = value();
-        else if (flag == "--modes")
-            options.modes = splitList(value(), ',');
-        else if (flag == "--views")
-            options.views = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--size")
-            parseSize(value(), options.width, options.height);
-        else if (flag == "--report")
-            options.reportDir = value();
-        else if (flag == "--pictures")
-        {
-            const std::uint64_t count = parseUnsigned(flag, value());
-            if (count > 1000)
-                throw UsageError("--pictures must lie between 0 and 1000");
-            options.pictures = int(count);
-        }
-        else if (flag == "--backoff")
-        {
-            const std::string setting = value();
-            if (setting != "on" && setting != "off")
-                throw UsageError("--backoff takes on or off, got '" + setting + "'");
-            options.backOff = setting == "on";
-        }
-        else if (flag == "--clusters")
-        {
-            const std::string setting = value();
-            std::string threshold = setting;
-            if (setting == "on")
-                threshold = "4096";
-            else if (setting == "off")
-                threshold = "0";
-            else
-                parseUnsigned("--clusters", setting);
-            // note: every extraction of the run (the bench's, each mode's VisibilityGroup) reads it
-            ::setenv("OSGVIS_CLUSTER_THRESHOLD", threshold.c_str(), 1);
-        }
-        else if (flag == "--explain")
-            options.explain = true;
-        else if (flag == "--json")
-            options.jsonFile = value();
-        else if (flag == "--oracle-cache")
-            options.oracleCacheDir = value();
-        else if (flag == "--supersample")
-            options.supersample = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--cube")
-            options.cube = true;
-        else if (flag == "--fov")
-        {
-            // The only field of view chosen here is the full sphere; narrower ones are the walk's.
-            const std::string degrees = value();
-            if (degrees != "360")
-                throw UsageError("--fov accepts only 360 (the six cube faces, as --cube), got '" + degrees + "'");
-            options.cube = true;
-        }
-        else if (flag == "--speeds")
-            options.speeds = parsePositiveList(flag, value(), 1000);
-        else if (flag == "--threads")
-            options.threads = parsePositiveList(flag, value(), 256);
-        else if (flag == "--mask-deltas")
-            options.maskDeltas = parseNonNegativeList(flag, value(), 1000.0);
-        else if (flag == "--mask-slowdown")
-        {
-            const std::uint64_t slowdown = parseUnsigned(flag, value());
-            if (slowdown < 1 || slowdown > MaxMaskSweepFrames)
-                throw UsageError(flag + " must lie between 1 and " + std::to_string(MaxMaskSweepFrames) + ", got '" +
-                                 std::to_string(slowdown) + "'");
-            options.maskSlowdown = unsigned(slowdown);
-        }
-        else if (flag == "--cull-only")
-            options.cullOnly = true;
-        else if (flag == "--dynamic")
-            options.dynamic = true;
-        else if (flag == "--paged")
-            options.paged = true;
-        else if (flag == "--paging-requests")
-            options.paging.requestsPerFrame = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--paging-keep")
-            options.paging.keepFrames = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--paging-keep-mb")
-            options.paging.keepBytes = parseUnsigned(flag, value()) * 1000000u;
-        else if (flag == "--paging-prefetch")
-            options.paging.prefetchFrames = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--volume")
-            options.volume = value();
-        else if (flag == "--plane-resolution")
-            options.planeResolution = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--planes")
-            options.planesPerDirection = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--volume-face")
-            options.volumeFaceSize = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--volume-eyes")
-            options.volumeEyes = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--volume-repeat")
-            options.volumeRepeat = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--volume-cells")
-            options.volumeCells = unsigned(parseUnsigned(flag, value()));
-        else if (flag == "--threading" || flag == "--async")
-        {
-            try
-            {
-                const std::string text = value();
-                if (flag == "--async")
-                    options.async = apps::parseOnOff(flag, text, true);
-                else
-                    for (const std::string& name : splitList(text, ','))
-                        options.threading.push_back(apps::threadingModelName(apps::parseThreadingModel(name)));
-            }
-            catch (const apps::ThreadingNameError& error)
-            {
-                throw UsageError(error.what());
-            }
-        }
-        else if (flag == "--async-region")
-        {
-            const std::vector<std::string> parts = splitList(value(), ',');
-            const std::vector<double> sizes =
-                parts.size() == 3 ? parseNonNegativeList(flag, parts[0] + "," + parts[1] + "," + parts[2], 1e9)
-                                  : std::vector<double>{};
-            if (sizes.size() != 3 || !(sizes[0] > 0.0 && sizes[1] > 0.0 && sizes[2] > 0.0))
-                throw UsageError("--async-region expects three positive sizes X,Y,Z");
-            for (int a = 0; a < 3; ++a)
-                options.asyncRegion[a] = sizes[a];
-        }
-        else if (flag == "--async-lookahead")
-        {
-            options.asyncLookAhead = unsigned(parseUnsigned(flag, value()));
-            if (options.asyncLookAhead < 1 || options.asyncLookAhead > 1000)
-                throw UsageError("--async-lookahead must lie between 1 and 1000");
-        }
-        else
-            throw UsageError("unknown argument '" + flag + "'");
+        if (index + 1 >= argc)
+            throw UsageError(flag + " needs a value");
+        return argv[++index];
     }
-    if (options.help)
-        return options;
+};
+
+// Each parse...Option below takes the options of one topic and returns whether `arg` was one of them. Flags
+// are matched whole, so the order in which the topics are tried does not matter.
+
+// What scene: a file or a generator, and how its drawables are split into clusters.
+bool parseSceneOption(Argument& arg, BenchOptions& options)
+{
+    const std::string& flag = arg.flag;
+    if (flag == "--scene")
+        options.sceneFile = arg.value();
+    else if (flag == "--generate")
+        options.generateKind = arg.value();
+    else if (flag == "--layout")
+        options.forestLayout = arg.value();
+    else if (flag == "--triangles")
+        options.triangles = parseUnsigned(flag, arg.value());
+    else if (flag == "--seed")
+        options.seed = std::uint32_t(parseUnsigned(flag, arg.value()));
+    else if (flag == "--clusters")
+    {
+        const std::string setting = arg.value();
+        std::string threshold = setting;
+        if (setting == "on")
+            threshold = "4096";
+        else if (setting == "off")
+            threshold = "0";
+        else
+            parseUnsigned("--clusters", setting);
+        // note: every extraction of the run (the bench's, each mode's VisibilityGroup) reads it
+        ::setenv("OSGVIS_CLUSTER_THRESHOLD", threshold.c_str(), 1);
+    }
+    else
+        return false;
+    return true;
+}
+
+// Which walk, and the views made of it.
+bool parseWalkOption(Argument& arg, BenchOptions& options)
+{
+    const std::string& flag = arg.flag;
+    if (flag == "--walk")
+        options.walkFile = arg.value();
+    else if (flag == "--save-walk")
+        options.saveWalkFile = arg.value();
+    else if (flag == "--views")
+        options.views = unsigned(parseUnsigned(flag, arg.value()));
+    else if (flag == "--size")
+        parseSize(arg.value(), options.width, options.height);
+    else if (flag == "--cube")
+        options.cube = true;
+    else if (flag == "--fov")
+    {
+        // The only field of view chosen here is the full sphere; narrower ones are the walk's.
+        const std::string degrees = arg.value();
+        if (degrees != "360")
+            throw UsageError("--fov accepts only 360 (the six cube faces, as --cube), got '" + degrees + "'");
+        options.cube = true;
+    }
+    else
+        return false;
+    return true;
+}
+
+// Which modes, and how they and the oracle run.
+bool parseModeOption(Argument& arg, BenchOptions& options)
+{
+    const std::string& flag = arg.flag;
+    if (flag == "--modes")
+        options.modes = splitList(arg.value(), ',');
+    else if (flag == "--backoff")
+    {
+        const std::string setting = arg.value();
+        if (setting != "on" && setting != "off")
+            throw UsageError("--backoff takes on or off, got '" + setting + "'");
+        options.backOff = setting == "on";
+    }
+    else if (flag == "--supersample")
+        options.supersample = unsigned(parseUnsigned(flag, arg.value()));
+    else
+        return false;
+    return true;
+}
+
+// Where the results go.
+bool parseOutputOption(Argument& arg, BenchOptions& options)
+{
+    const std::string& flag = arg.flag;
+    if (flag == "--dump-visible")
+        options.dumpVisibleDir = arg.value();
+    else if (flag == "--report")
+        options.reportDir = arg.value();
+    else if (flag == "--pictures")
+    {
+        const std::uint64_t count = parseUnsigned(flag, arg.value());
+        if (count > 1000)
+            throw UsageError("--pictures must lie between 0 and 1000");
+        options.pictures = int(count);
+    }
+    else if (flag == "--explain")
+        options.explain = true;
+    else if (flag == "--json")
+        options.jsonFile = arg.value();
+    else if (flag == "--oracle-cache")
+        options.oracleCacheDir = arg.value();
+    else
+        return false;
+    return true;
+}
+
+// The cull-only sweeps: observer speeds, thread counts, the mask modes' Delta.
+bool parseSweepOption(Argument& arg, BenchOptions& options)
+{
+    const std::string& flag = arg.flag;
+    if (flag == "--speeds")
+        options.speeds = parsePositiveList(flag, arg.value(), 1000);
+    else if (flag == "--threads")
+        options.threads = parsePositiveList(flag, arg.value(), 256);
+    else if (flag == "--mask-deltas")
+        options.maskDeltas = parseNonNegativeList(flag, arg.value(), 1000.0);
+    else if (flag == "--mask-slowdown")
+    {
+        const std::uint64_t slowdown = parseUnsigned(flag, arg.value());
+        if (slowdown < 1 || slowdown > MaxMaskSweepFrames)
+            throw UsageError(flag + " must lie between 1 and " + std::to_string(MaxMaskSweepFrames) + ", got '" +
+                             std::to_string(slowdown) + "'");
+        options.maskSlowdown = unsigned(slowdown);
+    }
+    else if (flag == "--cull-only")
+        options.cullOnly = true;
+    else
+        return false;
+    return true;
+}
+
+// The dynamic walk and the paged database's walk.
+bool parseDynamicAndPagedOption(Argument& arg, BenchOptions& options)
+{
+    const std::string& flag = arg.flag;
+    if (flag == "--dynamic")
+        options.dynamic = true;
+    else if (flag == "--paged")
+        options.paged = true;
+    else if (flag == "--paging-requests")
+        options.paging.requestsPerFrame = unsigned(parseUnsigned(flag, arg.value()));
+    else if (flag == "--paging-keep")
+        options.paging.keepFrames = unsigned(parseUnsigned(flag, arg.value()));
+    else if (flag == "--paging-keep-mb")
+        options.paging.keepBytes = parseUnsigned(flag, arg.value()) * 1000000u;
+    else if (flag == "--paging-prefetch")
+        options.paging.prefetchFrames = unsigned(parseUnsigned(flag, arg.value()));
+    else
+        return false;
+    return true;
+}
+
+// The multifocal volume PVS and the baked cells checked against the volume oracle.
+bool parseVolumeOption(Argument& arg, BenchOptions& options)
+{
+    const std::string& flag = arg.flag;
+    if (flag == "--volume")
+        options.volume = arg.value();
+    else if (flag == "--plane-resolution")
+        options.planeResolution = unsigned(parseUnsigned(flag, arg.value()));
+    else if (flag == "--planes")
+        options.planesPerDirection = unsigned(parseUnsigned(flag, arg.value()));
+    else if (flag == "--volume-face")
+        options.volumeFaceSize = unsigned(parseUnsigned(flag, arg.value()));
+    else if (flag == "--volume-eyes")
+        options.volumeEyes = unsigned(parseUnsigned(flag, arg.value()));
+    else if (flag == "--volume-repeat")
+        options.volumeRepeat = unsigned(parseUnsigned(flag, arg.value()));
+    else if (flag == "--volume-cells")
+        options.volumeCells = unsigned(parseUnsigned(flag, arg.value()));
+    else
+        return false;
+    return true;
+}
+
+// The threading table: OSG's threading models and the asynchronous visibility.
+bool parseThreadingOption(Argument& arg, BenchOptions& options)
+{
+    const std::string& flag = arg.flag;
+    if (flag == "--threading" || flag == "--async")
+    {
+        try
+        {
+            const std::string text = arg.value();
+            if (flag == "--async")
+                options.async = apps::parseOnOff(flag, text, true);
+            else
+                for (const std::string& name : splitList(text, ','))
+                    options.threading.push_back(apps::threadingModelName(apps::parseThreadingModel(name)));
+        }
+        catch (const apps::ThreadingNameError& error)
+        {
+            throw UsageError(error.what());
+        }
+    }
+    else if (flag == "--async-region")
+    {
+        const std::vector<std::string> parts = splitList(arg.value(), ',');
+        const std::vector<double> sizes =
+            parts.size() == 3 ? parseNonNegativeList(flag, parts[0] + "," + parts[1] + "," + parts[2], 1e9)
+                              : std::vector<double>{};
+        if (sizes.size() != 3 || !(sizes[0] > 0.0 && sizes[1] > 0.0 && sizes[2] > 0.0))
+            throw UsageError("--async-region expects three positive sizes X,Y,Z");
+        for (int a = 0; a < 3; ++a)
+            options.asyncRegion[a] = sizes[a];
+    }
+    else if (flag == "--async-lookahead")
+    {
+        options.asyncLookAhead = unsigned(parseUnsigned(flag, arg.value()));
+        if (options.asyncLookAhead < 1 || options.asyncLookAhead > 1000)
+            throw UsageError("--async-lookahead must lie between 1 and 1000");
+    }
+    else
+        return false;
+    return true;
+}
+
+// The checks of the options together, by topic.
+
+void checkSceneAndModes(const BenchOptions& options)
+{
     if (options.sceneFile.empty() == options.generateKind.empty())
         throw UsageError("give exactly one of --scene FILE or --generate KIND");
     if (options.modes.empty())
@@ -408,6 +533,10 @@ BenchOptions parseBenchOptions(int argc, char** argv)
             throw UsageError("--modes contains an empty name");
     if (options.supersample < 1 || options.supersample > 8)
         throw UsageError("--supersample must lie between 1 and 8");
+}
+
+void checkDynamicAndPaged(const BenchOptions& options)
+{
     if (options.dynamic && (options.cullOnly || options.sweeps() || options.maskSweep()))
         throw UsageError("--dynamic renders a walk against the oracle: no --cull-only, --speeds, --threads or --mask-deltas");
     if (options.paged &&
@@ -423,6 +552,10 @@ BenchOptions parseBenchOptions(int argc, char** argv)
                            options.paging.keepBytes != defaultPaging.keepBytes ||
                            options.paging.prefetchFrames != defaultPaging.prefetchFrames))
         throw UsageError("--paging-requests, --paging-keep, --paging-keep-mb and --paging-prefetch go with --paged");
+}
+
+void checkSweepsAndOutputs(const BenchOptions& options)
+{
     if (options.maskSlowdown != 1 && !options.maskSweep())
         throw UsageError("--mask-slowdown slows the observer of the mask sweep: give --mask-deltas too");
     // note: without --views the walk's length is known only once loaded; the sweep checks again there.
@@ -446,6 +579,11 @@ BenchOptions parseBenchOptions(int argc, char** argv)
         throw UsageError("--explain reads the rendered walk: not with --cull-only or --dynamic");
     if (options.cullOnly && !options.sweeps() && !options.maskSweep())
         throw UsageError("--cull-only needs a sweep: give --speeds, --threads and/or --mask-deltas");
+}
+
+// --dump-visible, --volume and --volume-cells are runs of their own.
+void checkRunsOfTheirOwn(const BenchOptions& options)
+{
     if (!options.dumpVisibleDir.empty() &&
         (options.cullOnly || options.dynamic || options.threadingTable() || !options.reportDir.empty() ||
          options.explain || options.sweeps() || options.maskSweep() || !options.volume.empty() ||
@@ -462,28 +600,33 @@ BenchOptions parseBenchOptions(int argc, char** argv)
          options.explain || options.sweeps() || options.maskSweep()))
         throw UsageError("--volume is a run of its own: no --cull-only, --dynamic, --threading, --async, --report, "
                          "--explain or sweeps");
-    if (!options.volume.empty())
+}
+
+// A --volume given: paper (with a generated forest) or a box with finite corners and a positive size.
+void checkVolumeBox(const BenchOptions& options)
+{
+    if (options.volume == "paper")
     {
-        if (options.volume == "paper")
-        {
-            if (options.generateKind != "forest")
-                throw UsageError("--volume paper is the view volume of a generated forest: give --generate forest");
-        }
-        else
-        {
-            double v[6];
-            char tail = 0;
-            if (std::sscanf(options.volume.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf%c", v, v + 1, v + 2, v + 3, v + 4, v + 5,
-                            &tail) != 6)
-                throw UsageError("--volume expects X0,Y0,Z0,X1,Y1,Z1 or paper, got '" + options.volume + "'");
-            for (double x : v)
-                if (!std::isfinite(x))
-                    throw UsageError("--volume: the box's corners must be finite, got '" + options.volume + "'");
-            if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5]))
-                throw UsageError("--volume: the box must have positive size along every axis, got '" + options.volume +
-                                 "'");
-        }
+        if (options.generateKind != "forest")
+            throw UsageError("--volume paper is the view volume of a generated forest: give --generate forest");
+        return;
     }
+    double v[6];
+    char tail = 0;
+    if (std::sscanf(options.volume.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf%c", v, v + 1, v + 2, v + 3, v + 4, v + 5,
+                    &tail) != 6)
+        throw UsageError("--volume expects X0,Y0,Z0,X1,Y1,Z1 or paper, got '" + options.volume + "'");
+    for (double x : v)
+        if (!std::isfinite(x))
+            throw UsageError("--volume: the box's corners must be finite, got '" + options.volume + "'");
+    if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5]))
+        throw UsageError("--volume: the box must have positive size along every axis, got '" + options.volume + "'");
+}
+
+void checkVolumeSettings(const BenchOptions& options)
+{
+    if (!options.volume.empty())
+        checkVolumeBox(options);
     if (options.planeResolution < 1 || options.planeResolution > 4096)
         throw UsageError("--plane-resolution must lie between 1 and 4096");
     if (options.planesPerDirection < 1 || options.planesPerDirection > 64)
@@ -492,6 +635,35 @@ BenchOptions parseBenchOptions(int argc, char** argv)
         throw UsageError("--volume-face must lie between 1 and 8192");
     if (options.volumeRepeat < 1 || options.volumeRepeat > 1000)
         throw UsageError("--volume-repeat must lie between 1 and 1000");
+}
+} // namespace
+
+BenchOptions parseBenchOptions(int argc, char** argv)
+{
+    BenchOptions options;
+    options.modes = {"osg", "frustum", "exact"};
+    for (int i = 0; i < argc; ++i)
+        options.commandLine += (i ? " " : "") + quotedArgument(argv[i]);
+
+    for (Argument arg{argc, argv, 1, {}}; arg.index < argc; ++arg.index)
+    {
+        arg.flag = argv[arg.index];
+        if (arg.flag == "--help" || arg.flag == "-h")
+            options.help = true;
+        else if (!parseSceneOption(arg, options) && !parseWalkOption(arg, options) && !parseModeOption(arg, options) &&
+                 !parseOutputOption(arg, options) && !parseSweepOption(arg, options) &&
+                 !parseDynamicAndPagedOption(arg, options) && !parseVolumeOption(arg, options) &&
+                 !parseThreadingOption(arg, options))
+            throw UsageError("unknown argument '" + arg.flag + "'");
+    }
+    if (options.help)
+        return options;
+    // In this order: the first fault found is the one reported.
+    checkSceneAndModes(options);
+    checkDynamicAndPaged(options);
+    checkSweepsAndOutputs(options);
+    checkRunsOfTheirOwn(options);
+    checkVolumeSettings(options);
     return options;
 }
 } // namespace osgVis::bench

@@ -70,6 +70,135 @@ bool floatPositions(const osg::Array& array, std::vector<float>& out)
     }
     return false;
 }
+
+// Whether `geometry` may be split at all: a vertex array, a cluster size, no per-primitive bindings,
+// and only triangle primitive sets, none instanced.
+bool clusterableGeometry(const osg::Geometry& geometry, std::uint32_t clusterTriangles)
+{
+    const osg::Array* vertices = geometry.getVertexArray();
+    if (!vertices || clusterTriangles == 0 || geometry.containsDeprecatedData() || geometry.getNumPrimitiveSets() == 0)
+        return false;
+    for (unsigned i = 0; i < geometry.getNumPrimitiveSets(); ++i)
+    {
+        const osg::PrimitiveSet* set = geometry.getPrimitiveSet(i);
+        if (!set || !triangleMode(set->getMode()) || set->getNumInstances() != 0)
+            return false;
+    }
+    return true;
+}
+
+// The geometry's triangles, three indices each; false when there are too few for two clusters (or
+// too many for 32-bit indices) or one has an index past the vertices or a non-finite vertex.
+bool triangleIndices(const osg::Geometry& geometry, const std::vector<float>& positions, std::uint32_t clusterTriangles,
+                     std::vector<std::uint32_t>& indices)
+{
+    const std::size_t vertexCount = positions.size() / 3;
+    osg::TriangleIndexFunctor<IndexCollector> functor;
+    functor.out = &indices;
+    geometry.accept(functor);
+    const std::size_t triangles = indices.size() / 3;
+    if (triangles < 2 * std::size_t(clusterTriangles) || triangles > 0xffffffffu / 3)
+        return false;
+    for (std::uint32_t index : indices)
+        if (index >= vertexCount || !std::isfinite(positions[3 * index]) || !std::isfinite(positions[3 * index + 1]) ||
+            !std::isfinite(positions[3 * index + 2]))
+            return false;
+    return true;
+}
+
+std::vector<float> triangleCentroids(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices)
+{
+    const std::size_t triangles = indices.size() / 3;
+    std::vector<float> centroids(triangles * 3);
+    for (std::size_t t = 0; t < triangles; ++t)
+        for (int k = 0; k < 3; ++k)
+            centroids[3 * t + k] = (positions[3 * indices[3 * t] + k] + positions[3 * indices[3 * t + 1] + k] +
+                                    positions[3 * indices[3 * t + 2] + k]) /
+                                   3.0f;
+    return centroids;
+}
+
+// Splits the triangles order[begin, end) in two across the longest axis of their centroids' box,
+// reordering them; returns where the upper half begins.
+std::size_t splitRange(std::vector<std::uint32_t>& order, const std::vector<float>& centroids, std::size_t begin,
+                       std::size_t end)
+{
+    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (std::size_t i = begin; i < end; ++i)
+        for (int k = 0; k < 3; ++k)
+        {
+            lo[k] = std::min(lo[k], centroids[3 * order[i] + k]);
+            hi[k] = std::max(hi[k], centroids[3 * order[i] + k]);
+        }
+    const int axis = (hi[0] - lo[0] >= hi[1] - lo[1] && hi[0] - lo[0] >= hi[2] - lo[2]) ? 0
+                     : (hi[1] - lo[1] >= hi[2] - lo[2])                                 ? 1
+                                                                                        : 2;
+    // The spatial middle of the longest axis keeps apart what a gap separates (a wall and what
+    // stands behind it); where it would leave less than a quarter on one side, the median.
+    const float cut = 0.5f * (lo[axis] + hi[axis]);
+    std::size_t middle = std::size_t(std::partition(order.begin() + long(begin), order.begin() + long(end),
+                                                    [&](std::uint32_t t) { return centroids[3 * t + axis] < cut; }) -
+                                     order.begin());
+    const std::size_t quarter = (end - begin) / 4;
+    if (middle < begin + quarter || middle > end - quarter)
+    {
+        middle = begin + (end - begin) / 2;
+        // note: ties broken by triangle index, so the split is the same on every run and platform
+        std::nth_element(order.begin() + long(begin), order.begin() + long(middle), order.begin() + long(end),
+                         [&](std::uint32_t a, std::uint32_t b)
+                         {
+                             const float ca = centroids[3 * a + axis], cb = centroids[3 * b + axis];
+                             return ca < cb || (ca == cb && a < b);
+                         });
+    }
+    return middle;
+}
+
+// The split, on an explicit stack (depth-first, lower half first): order[] ends up holding the
+// triangles leaf by leaf; returns the leaves' ranges of it.
+std::vector<std::pair<std::size_t, std::size_t>>
+splitIntoLeaves(std::vector<std::uint32_t>& order, const std::vector<float>& centroids, std::uint32_t clusterTriangles)
+{
+    std::vector<std::pair<std::size_t, std::size_t>> leaves, stack{{0, order.size()}};
+    while (!stack.empty())
+    {
+        const auto [begin, end] = stack.back();
+        stack.pop_back();
+        if (end - begin <= clusterTriangles)
+        {
+            leaves.push_back({begin, end});
+            continue;
+        }
+        const std::size_t middle = splitRange(order, centroids, begin, end);
+        stack.push_back({middle, end});
+        stack.push_back({begin, middle});
+    }
+    return leaves;
+}
+
+// The private drawing geometry: the user's arrays, `indices` as its one primitive set.
+osg::ref_ptr<osg::Geometry> drawingGeometry(const osg::Geometry& geometry, osg::DrawElementsUInt* indices)
+{
+    // note: the private geometry shares the user's arrays; configuring its vertex buffer objects gives
+    // those arrays a VertexBufferObject where they had none. The user's own Geometry draws as before:
+    // OSG uses an array's buffer object only for a geometry that enables VBOs itself.
+    osg::ref_ptr<osg::Geometry> draw = new osg::Geometry;
+    auto* source = const_cast<osg::Geometry*>(&geometry);
+    draw->setVertexArray(source->getVertexArray());
+    draw->setNormalArray(source->getNormalArray());
+    draw->setColorArray(source->getColorArray());
+    draw->setSecondaryColorArray(source->getSecondaryColorArray());
+    draw->setFogCoordArray(source->getFogCoordArray());
+    for (unsigned unit = 0; unit < source->getNumTexCoordArrays(); ++unit)
+        draw->setTexCoordArray(unit, source->getTexCoordArray(unit));
+    for (unsigned index = 0; index < source->getNumVertexAttribArrays(); ++index)
+        draw->setVertexAttribArray(index, source->getVertexAttribArray(index));
+    draw->addPrimitiveSet(indices);
+    draw->setUseDisplayList(false);
+    draw->setUseVertexArrayObject(false);
+    draw->setUseVertexBufferObjects(true);
+    return draw;
+}
 } // namespace
 
 ClusterLayout::~ClusterLayout() = default;
@@ -82,84 +211,20 @@ std::size_t ClusterLayout::memoryBytes() const
 
 osg::ref_ptr<ClusterLayout> ClusterLayout::build(const osg::Geometry& geometry, std::uint32_t clusterTriangles)
 {
-    const osg::Array* vertices = geometry.getVertexArray();
-    if (!vertices || clusterTriangles == 0 || geometry.containsDeprecatedData() || geometry.getNumPrimitiveSets() == 0)
+    if (!clusterableGeometry(geometry, clusterTriangles))
         return nullptr;
-    for (unsigned i = 0; i < geometry.getNumPrimitiveSets(); ++i)
-    {
-        const osg::PrimitiveSet* set = geometry.getPrimitiveSet(i);
-        if (!set || !triangleMode(set->getMode()) || set->getNumInstances() != 0)
-            return nullptr;
-    }
     std::vector<float> positions;
-    if (!floatPositions(*vertices, positions))
+    if (!floatPositions(*geometry.getVertexArray(), positions))
         return nullptr;
-    const std::size_t vertexCount = positions.size() / 3;
-
     std::vector<std::uint32_t> indices;
-    osg::TriangleIndexFunctor<IndexCollector> functor;
-    functor.out = &indices;
-    geometry.accept(functor);
-    const std::size_t triangles = indices.size() / 3;
-    if (triangles < 2 * std::size_t(clusterTriangles) || triangles > 0xffffffffu / 3)
+    if (!triangleIndices(geometry, positions, clusterTriangles, indices))
         return nullptr;
-    for (std::uint32_t index : indices)
-        if (index >= vertexCount || !std::isfinite(positions[3 * index]) || !std::isfinite(positions[3 * index + 1]) ||
-            !std::isfinite(positions[3 * index + 2]))
-            return nullptr;
+    const std::size_t triangles = indices.size() / 3;
 
-    std::vector<float> centroids(triangles * 3);
-    for (std::size_t t = 0; t < triangles; ++t)
-        for (int k = 0; k < 3; ++k)
-            centroids[3 * t + k] = (positions[3 * indices[3 * t] + k] + positions[3 * indices[3 * t + 1] + k] +
-                                    positions[3 * indices[3 * t + 2] + k]) /
-                                   3.0f;
-    // The split, on an explicit stack (depth-first, lower half first): order[] ends up holding the
-    // triangles leaf by leaf.
     std::vector<std::uint32_t> order(triangles);
     std::iota(order.begin(), order.end(), 0u);
-    std::vector<std::pair<std::size_t, std::size_t>> leaves, stack{{0, triangles}};
-    while (!stack.empty())
-    {
-        const auto [begin, end] = stack.back();
-        stack.pop_back();
-        if (end - begin <= clusterTriangles)
-        {
-            leaves.push_back({begin, end});
-            continue;
-        }
-        float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-        for (std::size_t i = begin; i < end; ++i)
-            for (int k = 0; k < 3; ++k)
-            {
-                lo[k] = std::min(lo[k], centroids[3 * order[i] + k]);
-                hi[k] = std::max(hi[k], centroids[3 * order[i] + k]);
-            }
-        const int axis = (hi[0] - lo[0] >= hi[1] - lo[1] && hi[0] - lo[0] >= hi[2] - lo[2]) ? 0
-                         : (hi[1] - lo[1] >= hi[2] - lo[2])                                  ? 1
-                                                                                             : 2;
-        // The spatial middle of the longest axis keeps apart what a gap separates (a wall and what
-        // stands behind it); where it would leave less than a quarter on one side, the median.
-        const float cut = 0.5f * (lo[axis] + hi[axis]);
-        std::size_t middle =
-            std::size_t(std::partition(order.begin() + long(begin), order.begin() + long(end),
-                                       [&](std::uint32_t t) { return centroids[3 * t + axis] < cut; }) -
-                        order.begin());
-        const std::size_t quarter = (end - begin) / 4;
-        if (middle < begin + quarter || middle > end - quarter)
-        {
-            middle = begin + (end - begin) / 2;
-            // note: ties broken by triangle index, so the split is the same on every run and platform
-            std::nth_element(order.begin() + long(begin), order.begin() + long(middle), order.begin() + long(end),
-                             [&](std::uint32_t a, std::uint32_t b)
-                             {
-                                 const float ca = centroids[3 * a + axis], cb = centroids[3 * b + axis];
-                                 return ca < cb || (ca == cb && a < b);
-                             });
-        }
-        stack.push_back({middle, end});
-        stack.push_back({begin, middle});
-    }
+    const std::vector<std::pair<std::size_t, std::size_t>> leaves =
+        splitIntoLeaves(order, triangleCentroids(positions, indices), clusterTriangles);
 
     osg::ref_ptr<ClusterLayout> layout = new ClusterLayout;
     layout->_indices = new osg::DrawElementsUInt(GL_TRIANGLES, indices.size());
@@ -178,26 +243,7 @@ osg::ref_ptr<ClusterLayout> ClusterLayout::build(const osg::Geometry& geometry, 
             layout->_clusterOfTriangle[t] = std::uint32_t(c);
         }
     }
-
-    // note: the private geometry shares the user's arrays; configuring its vertex buffer objects gives
-    // those arrays a VertexBufferObject where they had none. The user's own Geometry draws as before:
-    // OSG uses an array's buffer object only for a geometry that enables VBOs itself.
-    osg::ref_ptr<osg::Geometry> draw = new osg::Geometry;
-    auto* source = const_cast<osg::Geometry*>(&geometry);
-    draw->setVertexArray(source->getVertexArray());
-    draw->setNormalArray(source->getNormalArray());
-    draw->setColorArray(source->getColorArray());
-    draw->setSecondaryColorArray(source->getSecondaryColorArray());
-    draw->setFogCoordArray(source->getFogCoordArray());
-    for (unsigned unit = 0; unit < source->getNumTexCoordArrays(); ++unit)
-        draw->setTexCoordArray(unit, source->getTexCoordArray(unit));
-    for (unsigned index = 0; index < source->getNumVertexAttribArrays(); ++index)
-        draw->setVertexAttribArray(index, source->getVertexAttribArray(index));
-    draw->addPrimitiveSet(layout->_indices.get());
-    draw->setUseDisplayList(false);
-    draw->setUseVertexArrayObject(false);
-    draw->setUseVertexBufferObjects(true);
-    layout->_geometry = draw;
+    layout->_geometry = drawingGeometry(geometry, layout->_indices.get());
     return layout;
 }
 } // namespace osgVis

@@ -84,9 +84,9 @@ private:
     std::vector<char> _bytes;
     std::string _path;
 };
-} // namespace
 
-Q3Bsp Q3Bsp::read(const std::string& path)
+// The file's bytes, once its header says it is a Quake 3 level.
+Reader openLevel(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in)
@@ -96,15 +96,107 @@ Q3Bsp Q3Bsp::read(const std::string& path)
         r.fail("too short for a header");
     if (!(r.u8(0) == 'I' && r.u8(1) == 'B' && r.u8(2) == 'S' && r.u8(3) == 'P') || r.i32(4) != 46)
         r.fail("not IBSP version 46 (Quake 3)");
+    return r;
+}
 
-    Q3Bsp bsp;
+// Appends every plane's normal and distance; returns how many planes the level has.
+std::size_t readPlanes(const Reader& r, std::vector<core::Vec3>& normals, std::vector<double>& distances)
+{
     const auto [planes, planeCount] = r.lump(Planes, PlaneSize);
     for (std::size_t i = 0; i < planeCount; ++i)
     {
         const std::size_t at = planes + i * PlaneSize;
-        bsp._planeNormals.emplace_back(r.f32(at), r.f32(at + 4), r.f32(at + 8));
-        bsp._planeDistances.push_back(r.f32(at + 12));
+        normals.emplace_back(r.f32(at), r.f32(at + 4), r.f32(at + 8));
+        distances.push_back(r.f32(at + 12));
     }
+    return planeCount;
+}
+
+// Appends every leaf's cluster to `leafClusters`; returns per face the clusters of the leaves that
+// list it, sorted and without repeats.
+std::vector<std::vector<int>> readFaceClusters(const Reader& r, std::size_t leafs, std::size_t leafCount,
+                                               std::size_t faceCount, std::vector<int>& leafClusters)
+{
+    const auto [leafFaces, leafFaceCount] = r.lump(LeafFaces, 4);
+    std::vector<std::vector<int>> faceClusters(faceCount);
+    for (std::size_t i = 0; i < leafCount; ++i)
+    {
+        const std::size_t at = leafs + i * LeafSize;
+        const int cluster = r.i32(at);
+        leafClusters.push_back(cluster);
+        const std::int32_t first = r.i32(at + 32), count = r.i32(at + 36);
+        if (first < 0 || count < 0 || std::size_t(first) + std::size_t(count) > leafFaceCount)
+            r.fail("a leaf lists faces it does not have");
+        if (cluster < 0)
+            continue;
+        for (std::int32_t k = 0; k < count; ++k)
+        {
+            const std::int32_t face = r.i32(leafFaces + 4 * std::size_t(first + k));
+            if (face < 0 || std::size_t(face) >= faceCount)
+                r.fail("a leaf lists a face it does not have");
+            faceClusters[std::size_t(face)].push_back(cluster);
+        }
+    }
+    for (std::vector<int>& clusters : faceClusters)
+    {
+        std::sort(clusters.begin(), clusters.end());
+        clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
+    }
+    return faceClusters;
+}
+
+std::vector<int> readMeshVertices(const Reader& r)
+{
+    const auto [meshVertices, meshVertexCount] = r.lump(MeshVertices, 4);
+    std::vector<int> offsets;
+    for (std::size_t i = 0; i < meshVertexCount; ++i)
+        offsets.push_back(r.i32(meshVertices + 4 * i));
+    return offsets;
+}
+
+// The face of each drawable the plugin makes, in its order.
+std::vector<int> pluginDrawableFaces(const Reader& r, std::size_t faces, std::size_t faceCount)
+{
+    std::vector<int> drawableFaces;
+    for (const int type : {MeshFace, PolygonFace, PatchFace})
+        for (std::size_t f = 0; f < faceCount; ++f)
+        {
+            const std::size_t at = faces + f * FaceSize;
+            if (r.i32(at + 8) != type)
+                continue;
+            int pieces = 1;
+            if (type == PatchFace)
+                pieces = std::max(0, (r.i32(at + 96) - 1) / 2) * std::max(0, (r.i32(at + 100) - 1) / 2);
+            for (int p = 0; p < pieces; ++p)
+                drawableFaces.push_back(int(f));
+        }
+    return drawableFaces;
+}
+
+// The visdata lump: a bit per cluster pair, rows of `bytesPerCluster` bytes; nothing when it is shorter
+// than its header.
+void readVisibility(const Reader& r, int& clusterCount, int& bytesPerCluster, std::vector<std::uint8_t>& visibility)
+{
+    const auto [vis, visLength] = r.lump(VisData, 1);
+    if (visLength < 8)
+        return;
+    clusterCount = r.i32(vis);
+    bytesPerCluster = r.i32(vis + 4);
+    if (clusterCount < 0 || bytesPerCluster < 0 ||
+        8 + std::size_t(clusterCount) * std::size_t(bytesPerCluster) > visLength ||
+        std::size_t(bytesPerCluster) * 8 < std::size_t(clusterCount))
+        r.fail("the visibility lump does not hold a bit per cluster pair");
+    for (std::size_t i = 0; i < std::size_t(clusterCount) * std::size_t(bytesPerCluster); ++i)
+        visibility.push_back(r.u8(vis + 8 + i));
+}
+} // namespace
+
+Q3Bsp Q3Bsp::read(const std::string& path)
+{
+    const Reader r = openLevel(path);
+
+    Q3Bsp bsp;
+    const std::size_t planeCount = readPlanes(r, bsp._planeNormals, bsp._planeDistances);
     const auto [leafs, leafCount] = r.lump(Leafs, LeafSize);
     const auto [nodes, nodeCount] = r.lump(Nodes, NodeSize);
     for (std::size_t i = 0; i < nodeCount; ++i)
@@ -120,38 +212,12 @@ Q3Bsp Q3Bsp::read(const std::string& path)
     }
 
     const auto [faces, faceCount] = r.lump(Faces, FaceSize);
-    const auto [leafFaces, leafFaceCount] = r.lump(LeafFaces, 4);
-    bsp._faceClusters.assign(faceCount, {});
-    for (std::size_t i = 0; i < leafCount; ++i)
-    {
-        const std::size_t at = leafs + i * LeafSize;
-        const int cluster = r.i32(at);
-        bsp._leafClusters.push_back(cluster);
-        const std::int32_t first = r.i32(at + 32), count = r.i32(at + 36);
-        if (first < 0 || count < 0 || std::size_t(first) + std::size_t(count) > leafFaceCount)
-            r.fail("a leaf lists faces it does not have");
-        if (cluster < 0)
-            continue;
-        for (std::int32_t k = 0; k < count; ++k)
-        {
-            const std::int32_t face = r.i32(leafFaces + 4 * std::size_t(first + k));
-            if (face < 0 || std::size_t(face) >= faceCount)
-                r.fail("a leaf lists a face it does not have");
-            bsp._faceClusters[std::size_t(face)].push_back(cluster);
-        }
-    }
-    for (std::vector<int>& clusters : bsp._faceClusters)
-    {
-        std::sort(clusters.begin(), clusters.end());
-        clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
-    }
+    bsp._faceClusters = readFaceClusters(r, leafs, leafCount, faceCount, bsp._leafClusters);
 
     const auto [vertices, vertexCount] = r.lump(Vertices, VertexSize);
     (void)vertices;
     bsp._vertexCount = vertexCount;
-    const auto [meshVertices, meshVertexCount] = r.lump(MeshVertices, 4);
-    for (std::size_t i = 0; i < meshVertexCount; ++i)
-        bsp._meshVertices.push_back(r.i32(meshVertices + 4 * i));
+    bsp._meshVertices = readMeshVertices(r);
     for (std::size_t f = 0; f < faceCount; ++f)
     {
         const std::size_t at = faces + f * FaceSize;
@@ -159,31 +225,8 @@ Q3Bsp Q3Bsp::read(const std::string& path)
     }
 
     // The plugin's drawables, in its order.
-    for (const int type : {MeshFace, PolygonFace, PatchFace})
-        for (std::size_t f = 0; f < faceCount; ++f)
-        {
-            const std::size_t at = faces + f * FaceSize;
-            if (r.i32(at + 8) != type)
-                continue;
-            int pieces = 1;
-            if (type == PatchFace)
-                pieces = std::max(0, (r.i32(at + 96) - 1) / 2) * std::max(0, (r.i32(at + 100) - 1) / 2);
-            for (int p = 0; p < pieces; ++p)
-                bsp._drawableFaces.push_back(int(f));
-        }
-
-    const auto [vis, visLength] = r.lump(VisData, 1);
-    if (visLength >= 8)
-    {
-        bsp._clusterCount = r.i32(vis);
-        bsp._bytesPerCluster = r.i32(vis + 4);
-        if (bsp._clusterCount < 0 || bsp._bytesPerCluster < 0 ||
-            8 + std::size_t(bsp._clusterCount) * std::size_t(bsp._bytesPerCluster) > visLength ||
-            std::size_t(bsp._bytesPerCluster) * 8 < std::size_t(bsp._clusterCount))
-            r.fail("the visibility lump does not hold a bit per cluster pair");
-        for (std::size_t i = 0; i < std::size_t(bsp._clusterCount) * std::size_t(bsp._bytesPerCluster); ++i)
-            bsp._visibility.push_back(r.u8(vis + 8 + i));
-    }
+    bsp._drawableFaces = pluginDrawableFaces(r, faces, faceCount);
+    readVisibility(r, bsp._clusterCount, bsp._bytesPerCluster, bsp._visibility);
     return bsp;
 }
 

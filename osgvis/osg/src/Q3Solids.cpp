@@ -266,23 +266,28 @@ void readEntities(const Reader& r, std::size_t offset, std::size_t length, std::
             eyePoints.emplace_back(origin[0] * PluginScale, -origin[1] * PluginScale, origin[2] * PluginScale);
     }
 }
-} // namespace
 
-core::SolidSpace readQ3Solids(const void* data, std::size_t size, const std::string& name)
+// The header: the magic and version of a Quake 3 level.
+void checkHeader(const Reader& r)
 {
-    const Reader r(static_cast<const std::uint8_t*>(data), data ? size : 0, name);
     if (r.size() < HeaderSize)
         r.fail("too short for a header");
     if (!(r.u8(0) == 'I' && r.u8(1) == 'B' && r.u8(2) == 'S' && r.u8(3) == 'P') || r.i32(4) != 46)
         r.fail("not IBSP version 46 (Quake 3)");
+}
 
-    // Every record is read and checked before any solid is made.
+std::vector<Shader> readShaders(const Reader& r)
+{
     const auto [shaders, shaderCount] = r.lump(ShadersLump, "shaders", ShaderSize);
     std::vector<Shader> shaderList(shaderCount);
     for (std::size_t i = 0; i < shaderCount; ++i)
         shaderList[i] = {std::uint32_t(r.i32(shaders + i * ShaderSize + 64)),
                          std::uint32_t(r.i32(shaders + i * ShaderSize + 68))};
+    return shaderList;
+}
 
+std::vector<Plane> readPlanes(const Reader& r)
+{
     const auto [planes, planeCount] = r.lump(PlanesLump, "planes", PlaneSize);
     std::vector<Plane> planeList(planeCount);
     for (std::size_t i = 0; i < planeCount; ++i)
@@ -294,7 +299,11 @@ core::SolidSpace readQ3Solids(const void* data, std::size_t size, const std::str
             !std::isfinite(p.dist))
             r.fail("plane " + std::to_string(i) + " is not finite");
     }
+    return planeList;
+}
 
+std::vector<Side> readSides(const Reader& r, std::size_t planeCount, std::size_t shaderCount)
+{
     const auto [sides, sideCount] = r.lump(BrushSidesLump, "brush sides", BrushSideSize);
     std::vector<Side> sideList(sideCount);
     for (std::size_t i = 0; i < sideCount; ++i)
@@ -306,7 +315,11 @@ core::SolidSpace readQ3Solids(const void* data, std::size_t size, const std::str
             r.fail("brush side " + std::to_string(i) + " names shader " + std::to_string(shader) + ", which the level lacks");
         sideList[i] = {std::size_t(plane), std::size_t(shader)};
     }
+    return sideList;
+}
 
+std::vector<Brush> readBrushes(const Reader& r, std::size_t sideCount, std::size_t shaderCount)
+{
     const auto [brushes, brushCount] = r.lump(BrushesLump, "brushes", BrushSize);
     std::vector<Brush> brushList(brushCount);
     for (std::size_t i = 0; i < brushCount; ++i)
@@ -319,7 +332,19 @@ core::SolidSpace readQ3Solids(const void* data, std::size_t size, const std::str
             r.fail("brush " + std::to_string(i) + " names shader " + std::to_string(shader) + ", which the level lacks");
         brushList[i] = {std::size_t(first), std::size_t(count), std::size_t(shader)};
     }
+    return brushList;
+}
 
+// Model 0: its bounds, grown for rounding (the unproven bound of a brush that has no box), and its brushes.
+struct WorldModel
+{
+    double lo[3], hi[3];
+    std::size_t firstBrush, brushCount;
+};
+
+// Checks every model's brushes, though only the world's make solids.
+WorldModel readWorldModel(const Reader& r, std::size_t brushCount)
+{
     const auto [models, modelCount] = r.lump(ModelsLump, "models", ModelSize);
     if (modelCount == 0)
         r.fail("it has no world model (model 0)");
@@ -330,94 +355,137 @@ core::SolidSpace readQ3Solids(const void* data, std::size_t size, const std::str
         if (first < 0 || count < 0 || std::size_t(first) + std::size_t(count) > brushCount)
             r.fail("model " + std::to_string(i) + " names brushes the level lacks");
     }
-    double worldLo[3], worldHi[3];
+    WorldModel world;
     for (int axis = 0; axis < 3; ++axis)
     {
         const double a = r.f32(models + 4 * std::size_t(axis)), b = r.f32(models + 12 + 4 * std::size_t(axis));
         if (!std::isfinite(a) || !std::isfinite(b))
             r.fail("the world model's bounds are not finite");
-        worldLo[axis] = std::min(a, b) - UnprovenMargin;
-        worldHi[axis] = std::max(a, b) + UnprovenMargin;
+        world.lo[axis] = std::min(a, b) - UnprovenMargin;
+        world.hi[axis] = std::max(a, b) + UnprovenMargin;
     }
-    const std::size_t worldFirst = std::size_t(r.i32(models + 32)), worldCount = std::size_t(r.i32(models + 36));
+    world.firstBrush = std::size_t(r.i32(models + 32));
+    world.brushCount = std::size_t(r.i32(models + 36));
+    return world;
+}
+
+// The level's records the solids are made from, all read and checked.
+struct Level
+{
+    std::vector<Shader> shaders;
+    std::vector<Plane> planes;
+    std::vector<Side> sides;
+    std::vector<Brush> brushes;
+};
+
+// The box of the brush's axial sides, in Quake coordinates (infinite where no side bounds it);
+// false when some side is not axial.
+bool axialSideBox(const Level& level, const Brush& brush, double lo[3], double hi[3])
+{
+    std::fill(lo, lo + 3, -std::numeric_limits<double>::infinity());
+    std::fill(hi, hi + 3, std::numeric_limits<double>::infinity());
+    bool allAxial = true;
+    for (std::size_t s = brush.firstSide; s < brush.firstSide + brush.sideCount; ++s)
+    {
+        const Plane& plane = level.planes[level.sides[s].plane];
+        const int face = axialFace(plane);
+        if (face < 0)
+        {
+            allAxial = false;
+            continue;
+        }
+        const int axis = face / 2;
+        if (face & 1)
+            hi[axis] = std::min(hi[axis], faceCoordinate(plane, face));
+        else
+            lo[axis] = std::max(lo[axis], faceCoordinate(plane, face));
+    }
+    return allAxial;
+}
+
+// A brush whose sides are all axial and bound the box lo..hi (Quake coordinates) as a SolidBox.
+core::SolidBox solidBox(const Level& level, const Brush& brush, const double lo[3], const double hi[3])
+{
+    // Quake face f's bit: every side lying in its plane is drawn opaque.
+    std::array<bool, 6> opaque{true, true, true, true, true, true};
+    for (std::size_t s = brush.firstSide; s < brush.firstSide + brush.sideCount; ++s)
+    {
+        const Plane& plane = level.planes[level.sides[s].plane];
+        const int face = axialFace(plane);
+        const double bound = (face & 1) ? hi[face / 2] : lo[face / 2];
+        if (faceCoordinate(plane, face) != bound)
+            continue; // outside the box: bounds no face
+        const Shader& shader = level.shaders[level.sides[s].shader];
+        if ((shader.surfaceFlags & NotDrawnOpaque) || (shader.contentFlags & CONTENTS_TRANSLUCENT))
+            opaque[std::size_t(face)] = false;
+    }
+    // Negating y turns Quake's low y face (bit 2) into the plugin's high one (bit 3).
+    static constexpr int PluginBit[6] = {0, 1, 3, 2, 4, 5};
+    core::SolidBox box;
+    box.box = toPlugin(lo, hi);
+    for (int face = 0; face < 6; ++face)
+        if (opaque[std::size_t(face)])
+            box.opaqueFaces = std::uint8_t(box.opaqueFaces | (1u << PluginBit[face]));
+    return box;
+}
+
+// A world brush into `space`: a box when it is one, else (when solid) an unproven bound.
+void addWorldBrush(const Level& level, const Brush& brush, const WorldModel& world, core::SolidSpace& space)
+{
+    const std::uint32_t contents = level.shaders[brush.shader].contentFlags;
+    if (!(contents & CONTENTS_SOLID))
+        return;
+    // The box of the brush's axial sides, in Quake coordinates.
+    double lo[3], hi[3];
+    const bool allAxial = axialSideBox(level, brush, lo, hi);
+    bool bounded = true, positive = true;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        bounded = bounded && std::isfinite(lo[axis]) && std::isfinite(hi[axis]);
+        positive = positive && hi[axis] > lo[axis];
+    }
+
+    if (!(contents & NotABox) && allAxial && bounded && positive)
+    {
+        space.boxes.push_back(solidBox(level, brush, lo, hi));
+        return;
+    }
+
+    // Proves nothing: a bound around it, for the faces it may have cost their fragments.
+    if (bounded)
+    {
+        for (int axis = 0; axis < 3; ++axis)
+        {
+            const double a = std::min(lo[axis], hi[axis]), c = std::max(lo[axis], hi[axis]);
+            lo[axis] = a - UnprovenMargin;
+            hi[axis] = c + UnprovenMargin;
+        }
+        space.unproven.push_back(toPlugin(lo, hi));
+    }
+    else
+        space.unproven.push_back(toPlugin(world.lo, world.hi));
+}
+} // namespace
+
+core::SolidSpace readQ3Solids(const void* data, std::size_t size, const std::string& name)
+{
+    const Reader r(static_cast<const std::uint8_t*>(data), data ? size : 0, name);
+    checkHeader(r);
+
+    // Every record is read and checked before any solid is made.
+    Level level;
+    level.shaders = readShaders(r);
+    level.planes = readPlanes(r);
+    level.sides = readSides(r, level.planes.size(), level.shaders.size());
+    level.brushes = readBrushes(r, level.sides.size(), level.shaders.size());
+    const WorldModel world = readWorldModel(r, level.brushes.size());
 
     core::SolidSpace space;
     const auto [entities, entitiesLength] = r.lump(EntitiesLump, "entities", 1);
     readEntities(r, entities, entitiesLength, space.eyePoints);
 
-    for (std::size_t b = worldFirst; b < worldFirst + worldCount; ++b)
-    {
-        const Brush& brush = brushList[b];
-        const std::uint32_t contents = shaderList[brush.shader].contentFlags;
-        if (!(contents & CONTENTS_SOLID))
-            continue;
-        // The box of the brush's axial sides, in Quake coordinates.
-        double lo[3], hi[3];
-        std::fill(lo, lo + 3, -std::numeric_limits<double>::infinity());
-        std::fill(hi, hi + 3, std::numeric_limits<double>::infinity());
-        bool allAxial = true;
-        for (std::size_t s = brush.firstSide; s < brush.firstSide + brush.sideCount; ++s)
-        {
-            const Plane& plane = planeList[sideList[s].plane];
-            const int face = axialFace(plane);
-            if (face < 0)
-            {
-                allAxial = false;
-                continue;
-            }
-            const int axis = face / 2;
-            if (face & 1)
-                hi[axis] = std::min(hi[axis], faceCoordinate(plane, face));
-            else
-                lo[axis] = std::max(lo[axis], faceCoordinate(plane, face));
-        }
-        bool bounded = true, positive = true;
-        for (int axis = 0; axis < 3; ++axis)
-        {
-            bounded = bounded && std::isfinite(lo[axis]) && std::isfinite(hi[axis]);
-            positive = positive && hi[axis] > lo[axis];
-        }
-
-        if (!(contents & NotABox) && allAxial && bounded && positive)
-        {
-            // Quake face f's bit: every side lying in its plane is drawn opaque.
-            std::array<bool, 6> opaque{true, true, true, true, true, true};
-            for (std::size_t s = brush.firstSide; s < brush.firstSide + brush.sideCount; ++s)
-            {
-                const Plane& plane = planeList[sideList[s].plane];
-                const int face = axialFace(plane);
-                const double bound = (face & 1) ? hi[face / 2] : lo[face / 2];
-                if (faceCoordinate(plane, face) != bound)
-                    continue; // outside the box: bounds no face
-                const Shader& shader = shaderList[sideList[s].shader];
-                if ((shader.surfaceFlags & NotDrawnOpaque) || (shader.contentFlags & CONTENTS_TRANSLUCENT))
-                    opaque[std::size_t(face)] = false;
-            }
-            // Negating y turns Quake's low y face (bit 2) into the plugin's high one (bit 3).
-            static constexpr int PluginBit[6] = {0, 1, 3, 2, 4, 5};
-            core::SolidBox box;
-            box.box = toPlugin(lo, hi);
-            for (int face = 0; face < 6; ++face)
-                if (opaque[std::size_t(face)])
-                    box.opaqueFaces = std::uint8_t(box.opaqueFaces | (1u << PluginBit[face]));
-            space.boxes.push_back(box);
-            continue;
-        }
-
-        // Proves nothing: a bound around it, for the faces it may have cost their fragments.
-        if (bounded)
-        {
-            for (int axis = 0; axis < 3; ++axis)
-            {
-                const double a = std::min(lo[axis], hi[axis]), c = std::max(lo[axis], hi[axis]);
-                lo[axis] = a - UnprovenMargin;
-                hi[axis] = c + UnprovenMargin;
-            }
-            space.unproven.push_back(toPlugin(lo, hi));
-        }
-        else
-            space.unproven.push_back(toPlugin(worldLo, worldHi));
-    }
+    for (std::size_t b = world.firstBrush; b < world.firstBrush + world.brushCount; ++b)
+        addWorldBrush(level, level.brushes[b], world, space);
     return space;
 }
 

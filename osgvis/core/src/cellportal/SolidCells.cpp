@@ -203,6 +203,112 @@ bool closedFace(const CellPortal& portal, const Leaves& leaves, const std::vecto
             return false;
     return true;
 }
+
+// The solid boxes clipped to the root, those with an interior left, and their SolidBox entries.
+void clipSolidBoxes(const std::vector<SolidBox>& boxes, const Aabb& root, double tolerance, std::vector<Aabb>& clipped,
+                    std::vector<SolidBox>& kept)
+{
+    for (const SolidBox& solid : boxes)
+    {
+        const Aabb box{glm::max(solid.box.min, root.min), glm::min(solid.box.max, root.max)};
+        if (box.finite() && interiorsMeet(box, box, tolerance))
+        {
+            clipped.push_back(box);
+            kept.push_back(solid);
+        }
+    }
+}
+
+// The kd-tree split at the faces of the clipped boxes; its leaves become leaves.graph's cells, with
+// the faces between them as portals. Returns the tree, whose nodes the final graph reuses.
+FaceKdTree splitAtSolidFaces(Leaves& leaves, const std::vector<Aabb>& clipped, const SubdivisionOptions& options,
+                             double tolerance)
+{
+    const Aabb& root = leaves.graph.bounds;
+    // Every face plane may split (coverage only orders the splits: large walls first), until a
+    // node lies in one solid box or holds no face of one.
+    SubdivisionOptions splitting = options;
+    splitting.minCoverage = 0.0;
+    splitting.minFaceArea = 0.0;
+    const auto insideSolid = [&](const Aabb& node)
+    { return std::any_of(clipped.begin(), clipped.end(), [&](const Aabb& box) { return contains(box, node, tolerance); }); };
+    FaceKdTree tree = buildFaceKdTree(root, solidBoxFaces(clipped), splitting, tolerance, insideSolid);
+    leaves.graph.nodes = tree.nodes;
+    numberCells(leaves.graph, tree.nodeBoxes);
+    enumeratePortals(leaves.graph, {}, tolerance);
+    return tree;
+}
+
+// Per leaf: reached from the seeds through faces not `closed`. The seeds are the eye-space leaves,
+// or without any every leaf not solid.
+std::vector<bool> flood(const Leaves& leaves, const std::vector<bool>& eyes, const std::vector<bool>& closed)
+{
+    const std::size_t count = leaves.graph.cells.size();
+    const bool anyEyeSpace = std::find(eyes.begin(), eyes.end(), true) != eyes.end();
+    std::vector<bool> reached(count);
+    std::deque<std::uint32_t> queue;
+    for (std::uint32_t leaf = 0; leaf < count; ++leaf)
+        if ((reached[leaf] = anyEyeSpace ? bool(eyes[leaf]) : leaves.kind[leaf] != LeafKind::Solid))
+            queue.push_back(leaf);
+    while (!queue.empty())
+    {
+        const std::uint32_t leaf = queue.front();
+        queue.pop_front();
+        for (std::uint32_t p : leaves.graph.cellPortals[leaf])
+        {
+            const std::uint32_t next = leaves.graph.portals[p].otherCell(leaf);
+            if (!reached[next] && !closed[p])
+            {
+                reached[next] = true;
+                queue.push_back(next);
+            }
+        }
+    }
+    return reached;
+}
+
+// The cells: the reached leaves, renumbered, with the open faces between them as portals.
+CellGraph reachedCells(const Aabb& root, FaceKdTree& tree, const CellGraph& leafGraph, const std::vector<bool>& closed,
+                       const std::vector<bool>& reached)
+{
+    const std::size_t count = leafGraph.cells.size();
+    CellGraph graph;
+    graph.bounds = root;
+    graph.nodes = std::move(tree.nodes);
+    numberCells(graph, tree.nodeBoxes, &reached);
+    std::vector<std::uint32_t> cellOf(count, NoCell);
+    for (std::uint32_t leaf = 0, cell = 0; leaf < count; ++leaf)
+        if (reached[leaf])
+            cellOf[leaf] = cell++;
+    for (std::size_t p = 0; p < closed.size(); ++p)
+    {
+        const CellPortal& portal = leafGraph.portals[p];
+        if (!closed[p] && reached[portal.lowCell] && reached[portal.highCell])
+            graph.portals.push_back({portal.rect, cellOf[portal.lowCell], cellOf[portal.highCell]});
+    }
+    indexCellPortals(graph);
+    return graph;
+}
+
+// The leaf and face counts of the report.
+void countLeaves(const Leaves& leaves, const std::vector<bool>& eyes, const std::vector<bool>& closed,
+                 const std::vector<bool>& reached, SolidSubdivisionReport& found)
+{
+    for (std::size_t p = 0; p < closed.size(); ++p)
+        found.closedFaces += closed[p] ? 1 : 0;
+    const std::size_t count = leaves.graph.cells.size();
+    found.leaves = count;
+    for (std::uint32_t leaf = 0; leaf < count; ++leaf)
+    {
+        const LeafKind kind = leaves.kind[leaf];
+        found.solidLeaves += kind == LeafKind::Solid;
+        found.mixedLeaves += kind == LeafKind::Mixed;
+        found.eyeSpaceLeaves += eyes[leaf];
+        found.outsideLeaves += kind == LeafKind::Open && !eyes[leaf];
+        found.reachedSolidLeaves += kind == LeafKind::Solid && reached[leaf];
+        found.unreachedOpenLeaves += kind != LeafKind::Solid && !reached[leaf];
+    }
+}
 } // namespace
 
 CellGraph subdivideSolidCells(const Scene& scene, const SubdivisionOptions& options, SolidSubdivisionReport* report)
@@ -225,85 +331,21 @@ CellGraph subdivideSolidCells(const Scene& scene, const SubdivisionOptions& opti
     const double tolerance = subdivisionTolerance(root);
     std::vector<Aabb> clipped; // the boxes inside the root (no cell lies outside it)
     std::vector<SolidBox> kept;
-    for (const SolidBox& solid : solids.boxes)
-    {
-        const Aabb box{glm::max(solid.box.min, root.min), glm::min(solid.box.max, root.max)};
-        if (box.finite() && interiorsMeet(box, box, tolerance))
-        {
-            clipped.push_back(box);
-            kept.push_back(solid);
-        }
-    }
-    // Every face plane may split (coverage only orders the splits: large walls first), until a
-    // node lies in one solid box or holds no face of one.
-    SubdivisionOptions splitting = options;
-    splitting.minCoverage = 0.0;
-    splitting.minFaceArea = 0.0;
-    const auto insideSolid = [&](const Aabb& node)
-    { return std::any_of(clipped.begin(), clipped.end(), [&](const Aabb& box) { return contains(box, node, tolerance); }); };
-    FaceKdTree tree = buildFaceKdTree(root, solidBoxFaces(clipped), splitting, tolerance, insideSolid);
-    leaves.graph.nodes = tree.nodes;
-    numberCells(leaves.graph, tree.nodeBoxes);
-    enumeratePortals(leaves.graph, {}, tolerance);
+    clipSolidBoxes(solids.boxes, root, tolerance, clipped, kept);
+    FaceKdTree tree = splitAtSolidFaces(leaves, clipped, options, tolerance);
     classifyLeaves(leaves, clipped, tolerance);
     const std::vector<bool> eyes = eyeSpace(leaves, solids, tolerance);
 
     // The flood: every leaf a sightline from eye space may reach, through any face no opaque face
     // of a solid closes. Only those are cells; an eye anywhere else is in no cell and keeps
     // everything. Without eye space (no eye point stated) every open leaf is a seed.
-    const std::size_t count = leaves.graph.cells.size();
     std::vector<bool> closed(leaves.graph.portals.size());
     for (std::size_t p = 0; p < closed.size(); ++p)
         closed[p] = closedFace(leaves.graph.portals[p], leaves, eyes, kept, clipped, solids, tolerance);
-    const bool anyEyeSpace = std::find(eyes.begin(), eyes.end(), true) != eyes.end();
-    std::vector<bool> reached(count);
-    std::deque<std::uint32_t> queue;
-    for (std::uint32_t leaf = 0; leaf < count; ++leaf)
-        if ((reached[leaf] = anyEyeSpace ? bool(eyes[leaf]) : leaves.kind[leaf] != LeafKind::Solid))
-            queue.push_back(leaf);
-    while (!queue.empty())
-    {
-        const std::uint32_t leaf = queue.front();
-        queue.pop_front();
-        for (std::uint32_t p : leaves.graph.cellPortals[leaf])
-        {
-            const std::uint32_t next = leaves.graph.portals[p].otherCell(leaf);
-            if (!reached[next] && !closed[p])
-            {
-                reached[next] = true;
-                queue.push_back(next);
-            }
-        }
-    }
+    const std::vector<bool> reached = flood(leaves, eyes, closed);
 
-    CellGraph graph;
-    graph.bounds = root;
-    graph.nodes = std::move(tree.nodes);
-    numberCells(graph, tree.nodeBoxes, &reached);
-    std::vector<std::uint32_t> cellOf(count, NoCell);
-    for (std::uint32_t leaf = 0, cell = 0; leaf < count; ++leaf)
-        if (reached[leaf])
-            cellOf[leaf] = cell++;
-    for (std::size_t p = 0; p < closed.size(); ++p)
-    {
-        const CellPortal& portal = leaves.graph.portals[p];
-        found.closedFaces += closed[p] ? 1 : 0;
-        if (!closed[p] && reached[portal.lowCell] && reached[portal.highCell])
-            graph.portals.push_back({portal.rect, cellOf[portal.lowCell], cellOf[portal.highCell]});
-    }
-    indexCellPortals(graph);
-
-    found.leaves = count;
-    for (std::uint32_t leaf = 0; leaf < count; ++leaf)
-    {
-        const LeafKind kind = leaves.kind[leaf];
-        found.solidLeaves += kind == LeafKind::Solid;
-        found.mixedLeaves += kind == LeafKind::Mixed;
-        found.eyeSpaceLeaves += eyes[leaf];
-        found.outsideLeaves += kind == LeafKind::Open && !eyes[leaf];
-        found.reachedSolidLeaves += kind == LeafKind::Solid && reached[leaf];
-        found.unreachedOpenLeaves += kind != LeafKind::Solid && !reached[leaf];
-    }
+    CellGraph graph = reachedCells(root, tree, leaves.graph, closed, reached);
+    countLeaves(leaves, eyes, closed, reached, found);
     found.cells = graph.cells.size();
     found.portals = graph.portals.size();
     if (report)

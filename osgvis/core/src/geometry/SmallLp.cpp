@@ -180,17 +180,15 @@ void SmallLp::computeUpperBound()
     _upperBound = std::isnan(bound) ? Infinity : bound;
 }
 
-SmallLp::Status SmallLp::maximize()
+bool SmallLp::mapVariablesToColumns(int& boundRows)
 {
-    _iterationLimitHit = false;
-    _upperBound = Infinity;
     // Variables to columns y >= 0.
     _columns = 0;
-    int boundRows = 0;
+    boundRows = 0;
     for (int i = 0; i < _n; ++i)
     {
         if (_lo[i] > _hi[i])
-            return Status::Infeasible;
+            return false;
         _columnOf[i] = _columns;
         _split[i] = false;
         if (std::isfinite(_lo[i]))
@@ -214,17 +212,26 @@ SmallLp::Status SmallLp::maximize()
             _columns += 2;
         }
     }
+    return true;
+}
+
+void SmallLp::sizeTableau(int boundRows)
+{
     _m = static_cast<int>(_rowRhs.size()) + boundRows;
     _width = _columns + 2;
     const int auxiliaryColumn = _columns;
-    const int rhs = _columns + 1;
     _t.assign(static_cast<std::size_t>(_m + 2) * _width, 0.0);
     _basic.resize(static_cast<std::size_t>(_m));
     _nonbasic.resize(static_cast<std::size_t>(_columns + 1));
     for (int j = 0; j < _columns; ++j)
         _nonbasic[static_cast<std::size_t>(j)] = j;
     _nonbasic[static_cast<std::size_t>(auxiliaryColumn)] = _columns + _m;
+}
 
+double SmallLp::fillTableau()
+{
+    const int auxiliaryColumn = _columns;
+    const int rhs = _columns + 1;
     double largestRhs = 0.0;
     auto fillRow = [&](int row, const double* a, double b)
     {
@@ -264,7 +271,13 @@ SmallLp::Status SmallLp::maximize()
         if (_split[i])
             objective[_columnOf[i] + 1] += _c[i];
     }
+    return largestRhs;
+}
 
+SmallLp::Status SmallLp::findFeasibleBasis(double largestRhs)
+{
+    const int auxiliaryColumn = _columns;
+    const int rhs = _columns + 1;
     // Phase one (only when the origin of the y space is infeasible): maximize -auxiliary after
     // one pivot that makes every row feasible.
     int worst = -1;
@@ -273,37 +286,41 @@ SmallLp::Status SmallLp::maximize()
             (worst < 0 ||
              _t[static_cast<std::size_t>(i) * _width + rhs] < _t[static_cast<std::size_t>(worst) * _width + rhs]))
             worst = i;
-    if (worst >= 0)
-    {
-        _t[static_cast<std::size_t>(_m + 1) * _width + auxiliaryColumn] = 1.0;
-        pivot(worst, auxiliaryColumn);
-        iterate(_m + 1, true);
-        if (_iterationLimitHit)
-            return Status::IterationLimit;
-        if (_t[static_cast<std::size_t>(_m + 1) * _width + rhs] < -1e-9 * (1.0 + largestRhs))
-            return Status::Infeasible;
-        // A basic auxiliary (at zero) leaves through its largest coefficient.
-        const int auxiliary = _columns + _m;
-        for (int i = 0; i < _m; ++i)
-        {
-            if (_basic[static_cast<std::size_t>(i)] != auxiliary)
-                continue;
-            int best = -1;
-            for (int j = 0; j < rhs; ++j)
-                if (best < 0 || std::fabs(_t[static_cast<std::size_t>(i) * _width + j]) >
-                                    std::fabs(_t[static_cast<std::size_t>(i) * _width + best]))
-                    best = j;
-            if (best >= 0 && std::fabs(_t[static_cast<std::size_t>(i) * _width + best]) > PivotEpsilon)
-                pivot(i, best);
-        }
-    }
-
-    const bool bounded = iterate(_m, false);
+    if (worst < 0)
+        return Status::Optimal;
+    _t[static_cast<std::size_t>(_m + 1) * _width + auxiliaryColumn] = 1.0;
+    pivot(worst, auxiliaryColumn);
+    iterate(_m + 1, true);
     if (_iterationLimitHit)
         return Status::IterationLimit;
-    if (!bounded)
-        return Status::Unbounded;
+    if (_t[static_cast<std::size_t>(_m + 1) * _width + rhs] < -1e-9 * (1.0 + largestRhs))
+        return Status::Infeasible;
+    pivotOutAuxiliary();
+    return Status::Optimal;
+}
 
+void SmallLp::pivotOutAuxiliary()
+{
+    const int rhs = _columns + 1;
+    // A basic auxiliary (at zero) leaves through its largest coefficient.
+    const int auxiliary = _columns + _m;
+    for (int i = 0; i < _m; ++i)
+    {
+        if (_basic[static_cast<std::size_t>(i)] != auxiliary)
+            continue;
+        int best = -1;
+        for (int j = 0; j < rhs; ++j)
+            if (best < 0 || std::fabs(_t[static_cast<std::size_t>(i) * _width + j]) >
+                                std::fabs(_t[static_cast<std::size_t>(i) * _width + best]))
+                best = j;
+        if (best >= 0 && std::fabs(_t[static_cast<std::size_t>(i) * _width + best]) > PivotEpsilon)
+            pivot(i, best);
+    }
+}
+
+void SmallLp::readSolution()
+{
+    const int rhs = _columns + 1;
     _y.assign(static_cast<std::size_t>(_columns), 0.0);
     for (int i = 0; i < _m; ++i)
         if (_basic[static_cast<std::size_t>(i)] < _columns)
@@ -317,6 +334,29 @@ SmallLp::Status SmallLp::maximize()
         _x[i] = _split[i] ? y - _y[static_cast<std::size_t>(_columnOf[i] + 1)] : _offset[i] + _sign[i] * y;
         _value += _c[i] * _x[i];
     }
+}
+
+SmallLp::Status SmallLp::maximize()
+{
+    _iterationLimitHit = false;
+    _upperBound = Infinity;
+    int boundRows = 0;
+    if (!mapVariablesToColumns(boundRows))
+        return Status::Infeasible;
+    sizeTableau(boundRows);
+    const double largestRhs = fillTableau();
+
+    const Status phaseOne = findFeasibleBasis(largestRhs);
+    if (phaseOne != Status::Optimal)
+        return phaseOne;
+
+    const bool bounded = iterate(_m, false);
+    if (_iterationLimitHit)
+        return Status::IterationLimit;
+    if (!bounded)
+        return Status::Unbounded;
+
+    readSolution();
     computeUpperBound();
     return Status::Optimal;
 }

@@ -14,7 +14,33 @@ namespace osgVis::core
 namespace
 {
 constexpr double NoValue = -std::numeric_limits<double>::infinity();
+
+enum class SquareCover
+{
+    Outside, // the square misses the region
+    Partial,
+    Whole,
+};
+
+// How the region bounded by `edges` covers a pixel's square.
+SquareCover squareCover(const ConvexArea2& square, const std::vector<HalfPlane2>& edges)
+{
+    bool whole = true;
+    for (const HalfPlane2& h : edges)
+    {
+        // The corner farthest out decides "inside", the one farthest in decides "outside".
+        const double x = h.normal.x >= 0.0 ? square[1].x : square[0].x;
+        const double y = h.normal.y >= 0.0 ? square[2].y : square[0].y;
+        const double xIn = h.normal.x >= 0.0 ? square[0].x : square[1].x;
+        const double yIn = h.normal.y >= 0.0 ? square[0].y : square[2].y;
+        if (h.excess(Vec2(x, y)) > 0.0)
+            whole = false;
+        if (h.excess(Vec2(xIn, yIn)) >= 0.0)
+            return SquareCover::Outside;
+    }
+    return whole ? SquareCover::Whole : SquareCover::Partial;
 }
+} // namespace
 
 void MultifocalZBuffer::reset(const CorrespondencePlane& plane, const Aabb& volume, double margin, double nearDistance)
 {
@@ -70,20 +96,8 @@ double MultifocalZBuffer::lowestHitH(const ConvexArea2& region, const Plane& pol
     return std::max(lowest, polygonMinH);
 }
 
-bool MultifocalZBuffer::insert(const std::vector<Vec3>& polygon, const Plane& polygonPlane)
+bool MultifocalZBuffer::castUmbra(const std::vector<Vec3>& polygon)
 {
-    if (polygon.size() < 3 || _plane.width <= 0 || _plane.height <= 0)
-        return false;
-    double minH = std::numeric_limits<double>::infinity(), maxH = -minH;
-    for (const Vec3& p : polygon)
-    {
-        const double hp = _plane.h(p);
-        minH = std::min(minH, hp);
-        maxH = std::max(maxH, hp);
-    }
-    if (!(maxH < _volumeMinH - _margin))
-        return false;
-
     // The umbra: points q of P such that every ray from V through q meets the polygon. A ray from
     // corner c through q meets it iff q lies in its projection from c; the rays from V's interior
     // follow by convexity (docs/multifocal.md, "Umbra"), so the umbra is the intersection of the
@@ -113,77 +127,95 @@ bool MultifocalZBuffer::insert(const std::vector<Vec3>& polygon, const Plane& po
         return false;
     }
     halfPlanesOf(_umbra, _erosion, _edges);
+    return true;
+}
 
+MultifocalZBuffer::PixelRange MultifocalZBuffer::umbraPixels() const
+{
     Vec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
     for (const Vec2& q : _umbra)
     {
         lo = glm::min(lo, q);
         hi = glm::max(hi, q);
     }
-    const int i0 = std::max(0, int(std::floor((lo.x - _plane.origin.x) / _plane.pixel)));
-    const int j0 = std::max(0, int(std::floor((lo.y - _plane.origin.y) / _plane.pixel)));
-    const int i1 = std::min(_plane.width - 1, int(std::floor((hi.x - _plane.origin.x) / _plane.pixel)));
-    const int j1 = std::min(_plane.height - 1, int(std::floor((hi.y - _plane.origin.y) / _plane.pixel)));
-    if (i0 > i1 || j0 > j1)
+    PixelRange range;
+    range.i0 = std::max(0, int(std::floor((lo.x - _plane.origin.x) / _plane.pixel)));
+    range.j0 = std::max(0, int(std::floor((lo.y - _plane.origin.y) / _plane.pixel)));
+    range.i1 = std::min(_plane.width - 1, int(std::floor((hi.x - _plane.origin.x) / _plane.pixel)));
+    range.j1 = std::min(_plane.height - 1, int(std::floor((hi.y - _plane.origin.y) / _plane.pixel)));
+    return range;
+}
+
+void MultifocalZBuffer::coverPixel(int i, int j, const Plane& polygonPlane, double polygonMinH)
+{
+    const ConvexArea2 square = _plane.square(i, j);
+    const SquareCover cover = squareCover(square, _edges);
+    if (cover == SquareCover::Outside)
+        return;
+    const std::size_t index = std::size_t(j) * std::size_t(_plane.width) + std::size_t(i);
+    if (cover == SquareCover::Whole)
+    {
+        const double z = lowestHitH(square, polygonPlane, polygonMinH);
+        if (z > _full[index])
+        {
+            _full[index] = z;
+            _dirty[index] = 1;
+            ++_statistics.fullPixels;
+        }
+        return;
+    }
+    _piece = square;
+    clipInsideAll(_piece, _edges, _clip);
+    if (!hasArea(_piece))
+        return;
+    const double z = lowestHitH(_piece, polygonPlane, polygonMinH);
+    if (!(z > _full[index]) || maxFragmentsPerPixel == 0)
+        return;
+    storeFragment(index, z);
+}
+
+void MultifocalZBuffer::storeFragment(std::size_t index, double z)
+{
+    std::vector<Fragment>& fragments = _fragments[index];
+    if (fragments.size() >= maxFragmentsPerPixel)
+    {
+        auto lowest = std::min_element(fragments.begin(), fragments.end(),
+                                       [](const Fragment& a, const Fragment& b) { return a.z < b.z; });
+        ++_statistics.droppedFragments;
+        if (lowest->z >= z)
+            return;
+        *lowest = Fragment{z, _piece};
+    }
+    else
+        fragments.push_back(Fragment{z, _piece});
+    ++_statistics.fragments;
+    _dirty[index] = 1;
+}
+
+bool MultifocalZBuffer::insert(const std::vector<Vec3>& polygon, const Plane& polygonPlane)
+{
+    if (polygon.size() < 3 || _plane.width <= 0 || _plane.height <= 0)
+        return false;
+    double minH = std::numeric_limits<double>::infinity(), maxH = -minH;
+    for (const Vec3& p : polygon)
+    {
+        const double hp = _plane.h(p);
+        minH = std::min(minH, hp);
+        maxH = std::max(maxH, hp);
+    }
+    if (!(maxH < _volumeMinH - _margin))
+        return false;
+
+    if (!castUmbra(polygon))
+        return false;
+    const PixelRange range = umbraPixels();
+    if (range.i0 > range.i1 || range.j0 > range.j1)
         return false;
     ++_statistics.inserted;
 
-    for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i)
-        {
-            const ConvexArea2 square = _plane.square(i, j);
-            bool whole = true, outside = false;
-            for (const HalfPlane2& h : _edges)
-            {
-                // The corner farthest out decides "inside", the one farthest in decides "outside".
-                const double x = h.normal.x >= 0.0 ? square[1].x : square[0].x;
-                const double y = h.normal.y >= 0.0 ? square[2].y : square[0].y;
-                const double xIn = h.normal.x >= 0.0 ? square[0].x : square[1].x;
-                const double yIn = h.normal.y >= 0.0 ? square[0].y : square[2].y;
-                if (h.excess(Vec2(x, y)) > 0.0)
-                    whole = false;
-                if (h.excess(Vec2(xIn, yIn)) >= 0.0)
-                {
-                    outside = true;
-                    break;
-                }
-            }
-            if (outside)
-                continue;
-            const std::size_t index = std::size_t(j) * std::size_t(_plane.width) + std::size_t(i);
-            if (whole)
-            {
-                const double z = lowestHitH(square, polygonPlane, minH);
-                if (z > _full[index])
-                {
-                    _full[index] = z;
-                    _dirty[index] = 1;
-                    ++_statistics.fullPixels;
-                }
-                continue;
-            }
-            _piece = square;
-            clipInsideAll(_piece, _edges, _clip);
-            if (!hasArea(_piece))
-                continue;
-            const double z = lowestHitH(_piece, polygonPlane, minH);
-            if (!(z > _full[index]) || maxFragmentsPerPixel == 0)
-                continue;
-            std::vector<Fragment>& fragments = _fragments[index];
-            if (fragments.size() >= maxFragmentsPerPixel)
-            {
-                auto lowest = std::min_element(fragments.begin(), fragments.end(),
-                                               [](const Fragment& a, const Fragment& b) { return a.z < b.z; });
-                ++_statistics.droppedFragments;
-                if (lowest->z >= z)
-                    continue;
-                *lowest = Fragment{z, _piece};
-            }
-            else
-                fragments.push_back(Fragment{z, _piece});
-            ++_statistics.fragments;
-            _dirty[index] = 1;
-        }
+    for (int j = range.j0; j <= range.j1; ++j)
+        for (int i = range.i0; i <= range.i1; ++i)
+            coverPixel(i, j, polygonPlane, minH);
     return true;
 }
 

@@ -61,6 +61,20 @@ private:
     double pixelValue(std::size_t index);
     double lowestHitH(const ConvexArea2& region, const Plane& polygonPlane, double polygonMinH) const;
 
+    // The phases of insert().
+    struct PixelRange
+    {
+        int i0 = 0, j0 = 0, i1 = -1, j1 = -1; // inclusive
+    };
+    // The polygon's umbra into _umbra and its eroded edges into _edges; false when it has no area.
+    bool castUmbra(const std::vector<Vec3>& polygon);
+    // The window's pixels that _umbra's bounding box meets (empty when i0 > i1 or j0 > j1).
+    PixelRange umbraPixels() const;
+    // Raises pixel (i, j)'s full value, or adds a coverage-map piece, by the umbra in _edges.
+    void coverPixel(int i, int j, const Plane& polygonPlane, double polygonMinH);
+    // Keeps _piece at value z in the pixel's coverage map, dropping its lowest piece when full.
+    void storeFragment(std::size_t index, double z);
+
     CorrespondencePlane _plane;
     std::array<Vec3, 8> _corners{};
     std::array<double, 8> _cornerH{};

@@ -127,6 +127,158 @@ bool facesAwayFromVolume(const Triangle& t, const std::array<Vec3, 8>& corners)
             return false;
     return true;
 }
+
+// What computeVolumePvs shares between V's faces and their planes: its arguments, V's corners, the
+// scene's scale and rounding margin, the answer being built, and buffers reused from plane to plane.
+struct VolumeCulling
+{
+    const Scene& scene;
+    const std::vector<OccluderPolygon>& occluders;
+    const Aabb& volume;
+    const MultifocalOptions& options;
+    const std::array<Vec3, 8> corners;
+    const double size;
+    const double margin;
+    const bool withTriangles;
+    VolumePvs& result;
+    MultifocalZBuffer buffer{};
+    std::vector<ObjectId> candidates{};
+    std::vector<Aabb> candidateBounds{};
+    std::vector<std::uint8_t> ownerCulled{}; // per object: culled, so its polygons add no cover
+};
+
+// Occludees: objects wholly beyond the face, still in the PVS.
+void collectCandidates(VolumeCulling& c, const VolumeFace& face)
+{
+    c.candidates.clear();
+    c.candidateBounds.clear();
+    for (const SceneObject& object : c.scene.objects)
+    {
+        if ((object.flags & NeverCulled) || !c.result.objects.test(object.id) || object.bounds.empty())
+            continue;
+        const double nearest = face.direction > 0 ? object.bounds.min[face.axis] - face.coordinate
+                                                  : face.coordinate - object.bounds.max[face.axis];
+        if (nearest > 2.0 * c.margin)
+        {
+            c.candidates.push_back(object.id);
+            c.candidateBounds.push_back(object.bounds);
+        }
+    }
+}
+
+// Inserts the usable occluders into the plane's buffer, best first, up to the per-plane limit;
+// returns how many went in.
+std::uint32_t insertOccluders(VolumeCulling& c, const std::vector<FaceOccluder>& usable)
+{
+    const std::size_t objectCount = c.scene.objects.size();
+    std::uint32_t inserted = 0;
+    for (const FaceOccluder& o : usable)
+    {
+        if (inserted >= c.options.maxOccludersPerPlane)
+            break;
+        if (o.owner != InvalidObject && o.owner < objectCount && c.ownerCulled[o.owner])
+            continue; // its object is hidden whole: nothing of it adds cover
+        // Occluder and occludee at once (§4.5): a hidden polygon adds no cover.
+        if (c.buffer.hidden(o.vertices.data(), o.vertices.size()))
+            continue;
+        if (c.buffer.insert(o.vertices, o.plane))
+            ++inserted;
+    }
+    return inserted;
+}
+
+// Tests the triangles [first, end) not hidden yet, marking those hidden now; true when all are.
+bool allTrianglesHidden(VolumeCulling& c, std::size_t first, std::size_t end)
+{
+    bool allHidden = true;
+    for (std::size_t index = first; index < end; ++index)
+    {
+        if (c.result.hiddenTriangles[index])
+            continue;
+        const Triangle& tri = c.scene.triangles[index];
+        const Vec3 points[3] = {Vec3(tri.a), Vec3(tri.b), Vec3(tri.c)};
+        ++c.result.statistics.trianglesTested;
+        if (c.buffer.hidden(points, 3))
+            c.result.hiddenTriangles[index] = 1;
+        else
+            allHidden = false;
+    }
+    return allHidden;
+}
+
+// Everything still in the PVS is tested after all insertions (§4.5, "apply twice"),
+// so the answer does not depend on the order occluders came in.
+void cullCandidates(VolumeCulling& c)
+{
+    for (ObjectId id : c.candidates)
+    {
+        if (!c.result.objects.test(id))
+            continue;
+        const SceneObject& object = c.scene.objects[id];
+        const auto box = boxCorners(object.bounds);
+        bool culled = c.buffer.hidden(box.data(), box.size());
+        const auto [first, end] = c.scene.trianglesOf(object);
+        if (!culled && c.withTriangles && end > first)
+            culled = allTrianglesHidden(c, first, end);
+        if (culled)
+        {
+            c.result.objects.clear(id);
+            c.ownerCulled[id] = 1;
+        }
+    }
+}
+
+// Culls the candidates beyond `face` on the planes placed beyond it.
+void cullBeyondFace(VolumeCulling& c, const VolumeFace& face)
+{
+    collectCandidates(c, face);
+    if (c.candidates.empty())
+        return;
+    const std::vector<FaceOccluder> usable =
+        faceOccluders(c.scene, c.occluders, face, c.volume, c.corners, c.margin, c.options);
+    if (usable.empty())
+        return;
+    std::vector<DepthSample> samples;
+    samples.reserve(usable.size());
+    for (const FaceOccluder& o : usable)
+        samples.push_back({o.depth, std::sqrt(o.areaAngle)});
+    const double minDepth = std::max(1e-3 * c.size, 4.0 * c.margin);
+    for (double depth : planeDepths(samples, c.options.planesPerDirection, minDepth))
+    {
+        const CorrespondencePlane plane =
+            placePlane(face, c.volume, depth, c.candidateBounds, c.options.maxWindowAngle, c.options.planeResolution);
+        if (plane.width <= 0)
+            continue;
+        // note: nearDistance is the near plane's farthest reach; its distance along the
+        // axis is at least a quarter of it for any field of view up to 150 degrees
+        c.buffer.reset(plane, c.volume, c.margin, 0.25 * c.options.nearDistance);
+        ++c.result.statistics.planes;
+        c.result.statistics.occludersInserted += insertOccluders(c, usable);
+        cullCandidates(c);
+    }
+}
+
+// The statistics of the final PVS; the triangles of culled objects count as culled.
+void countCulled(const Scene& scene, const std::array<Vec3, 8>& corners, bool withTriangles, VolumePvs& result)
+{
+    for (const SceneObject& object : scene.objects)
+    {
+        const bool culled = !result.objects.test(object.id);
+        result.statistics.objectsCulled += culled ? 1 : 0;
+        if (!withTriangles)
+            continue;
+        const auto [first, end] = scene.trianglesOf(object);
+        for (std::size_t index = first; index < end; ++index)
+        {
+            if (culled)
+                result.hiddenTriangles[index] = 1;
+            const bool away = facesAwayFromVolume(scene.triangles[index], corners);
+            result.statistics.trianglesBackFacing += away ? 1 : 0;
+            result.statistics.trianglesBackFacingNotCulled += (away && !result.hiddenTriangles[index]) ? 1 : 0;
+            result.statistics.trianglesCulled += result.hiddenTriangles[index];
+        }
+    }
+}
 } // namespace
 
 std::vector<OccluderPolygon> volumeOccluders(const Scene& scene)
@@ -157,119 +309,15 @@ VolumePvs computeVolumePvs(const Scene& scene, const std::vector<OccluderPolygon
     const double size = all.empty() ? 1.0 : std::max(glm::length(all.extent()), 1e-30);
     const double margin = 1e-9 * std::max(size, glm::length(glm::abs(all.center())));
 
-    MultifocalZBuffer buffer;
-    buffer.maxFragmentsPerPixel = options.maxFragmentsPerPixel;
-    std::vector<ObjectId> candidates;
-    std::vector<Aabb> candidateBounds;
-    std::vector<std::uint8_t> ownerCulled(objectCount, 0);
+    VolumeCulling culling{scene, occluders, volume, options, corners, size, margin, withTriangles, result};
+    culling.buffer.maxFragmentsPerPixel = options.maxFragmentsPerPixel;
+    culling.ownerCulled.assign(objectCount, 0);
 
     for (int axis = 0; axis < 3; ++axis)
         for (int direction : {1, -1})
-        {
-            const VolumeFace face{axis, direction, direction > 0 ? volume.max[axis] : volume.min[axis]};
-            // Occludees: objects wholly beyond the face, still in the PVS.
-            candidates.clear();
-            candidateBounds.clear();
-            for (const SceneObject& object : scene.objects)
-            {
-                if ((object.flags & NeverCulled) || !result.objects.test(object.id) || object.bounds.empty())
-                    continue;
-                const double nearest = direction > 0 ? object.bounds.min[axis] - face.coordinate
-                                                     : face.coordinate - object.bounds.max[axis];
-                if (nearest > 2.0 * margin)
-                {
-                    candidates.push_back(object.id);
-                    candidateBounds.push_back(object.bounds);
-                }
-            }
-            if (candidates.empty())
-                continue;
-            const std::vector<FaceOccluder> usable = faceOccluders(scene, occluders, face, volume, corners, margin, options);
-            if (usable.empty())
-                continue;
-            std::vector<DepthSample> samples;
-            samples.reserve(usable.size());
-            for (const FaceOccluder& o : usable)
-                samples.push_back({o.depth, std::sqrt(o.areaAngle)});
-            const double minDepth = std::max(1e-3 * size, 4.0 * margin);
-            for (double depth : planeDepths(samples, options.planesPerDirection, minDepth))
-            {
-                const CorrespondencePlane plane =
-                    placePlane(face, volume, depth, candidateBounds, options.maxWindowAngle, options.planeResolution);
-                if (plane.width <= 0)
-                    continue;
-                // note: nearDistance is the near plane's farthest reach; its distance along the
-                // axis is at least a quarter of it for any field of view up to 150 degrees
-                buffer.reset(plane, volume, margin, 0.25 * options.nearDistance);
-                ++result.statistics.planes;
-                std::uint32_t inserted = 0;
-                for (const FaceOccluder& o : usable)
-                {
-                    if (inserted >= options.maxOccludersPerPlane)
-                        break;
-                    if (o.owner != InvalidObject && o.owner < objectCount && ownerCulled[o.owner])
-                        continue; // its object is hidden whole: nothing of it adds cover
-                    // Occluder and occludee at once (§4.5): a hidden polygon adds no cover.
-                    if (buffer.hidden(o.vertices.data(), o.vertices.size()))
-                        continue;
-                    if (buffer.insert(o.vertices, o.plane))
-                        ++inserted;
-                }
-                result.statistics.occludersInserted += inserted;
+            cullBeyondFace(culling, VolumeFace{axis, direction, direction > 0 ? volume.max[axis] : volume.min[axis]});
 
-                // Everything still in the PVS is tested after all insertions (§4.5, "apply twice"),
-                // so the answer does not depend on the order occluders came in.
-                for (ObjectId id : candidates)
-                {
-                    if (!result.objects.test(id))
-                        continue;
-                    const SceneObject& object = scene.objects[id];
-                    const auto box = boxCorners(object.bounds);
-                    bool culled = buffer.hidden(box.data(), box.size());
-                    const auto [first, end] = scene.trianglesOf(object);
-                    if (!culled && withTriangles && end > first)
-                    {
-                        bool allHidden = true;
-                        for (std::size_t index = first; index < end; ++index)
-                        {
-                            if (result.hiddenTriangles[index])
-                                continue;
-                            const Triangle& tri = scene.triangles[index];
-                            const Vec3 points[3] = {Vec3(tri.a), Vec3(tri.b), Vec3(tri.c)};
-                            ++result.statistics.trianglesTested;
-                            if (buffer.hidden(points, 3))
-                                result.hiddenTriangles[index] = 1;
-                            else
-                                allHidden = false;
-                        }
-                        culled = allHidden;
-                    }
-                    if (culled)
-                    {
-                        result.objects.clear(id);
-                        ownerCulled[id] = 1;
-                    }
-                }
-            }
-        }
-
-    for (const SceneObject& object : scene.objects)
-    {
-        const bool culled = !result.objects.test(object.id);
-        result.statistics.objectsCulled += culled ? 1 : 0;
-        if (!withTriangles)
-            continue;
-        const auto [first, end] = scene.trianglesOf(object);
-        for (std::size_t index = first; index < end; ++index)
-        {
-            if (culled)
-                result.hiddenTriangles[index] = 1;
-            const bool away = facesAwayFromVolume(scene.triangles[index], corners);
-            result.statistics.trianglesBackFacing += away ? 1 : 0;
-            result.statistics.trianglesBackFacingNotCulled += (away && !result.hiddenTriangles[index]) ? 1 : 0;
-            result.statistics.trianglesCulled += result.hiddenTriangles[index];
-        }
-    }
+    countCulled(scene, corners, withTriangles, result);
     return result;
 }
 } // namespace osgVis::core

@@ -57,6 +57,21 @@ private:
     // _iterationLimitHit when it gives up.
     bool iterate(int objectiveRow, bool allowArtificial);
 
+    // The phases of maximize().
+    // Maps each variable to its column(s) y >= 0 and counts the rows its two finite bounds need;
+    // false when some lo > hi.
+    bool mapVariablesToColumns(int& boundRows);
+    // Sizes the tableau (zeroed) and makes the columns nonbasic and the auxiliary the last one.
+    void sizeTableau(int boundRows);
+    // Writes the rows, the bound rows and the objective row; returns the largest |rhs|.
+    double fillTableau();
+    // Phase one: Optimal when a feasible basis is in place, else Infeasible or IterationLimit.
+    Status findFeasibleBasis(double largestRhs);
+    // After phase one: an auxiliary still basic (at zero) leaves the basis.
+    void pivotOutAuxiliary();
+    // The columns' values into _y, and the variables' values and the objective from them.
+    void readSolution();
+
     int _n = 0;
     double _lo[MaxVariables] = {};
     double _hi[MaxVariables] = {};
