@@ -215,3 +215,29 @@ TEST(Clusters, OccluderPolygonsSpanClustersAndNameThem)
     EXPECT_EQ(whole->parts.size(), clusters);
     EXPECT_EQ(named.size(), clusters);
 }
+
+// Cluster sizes of 1 or 2 with triangles whose centroids coincide: a range of 2 or 3 alike triangles
+// once split into itself and nothing, for ever. Every cut now leaves a triangle on each side.
+TEST(Clusters, AlikeTrianglesSplitDownToClustersOfOne)
+{
+    osg::ref_ptr<osg::Vec3Array> vertices = new osg::Vec3Array;
+    for (int copy = 0; copy < 12; ++copy)
+        for (const osg::Vec3& corner : {osg::Vec3(0, 0, 0), osg::Vec3(1, 0, 0), osg::Vec3(0, 1, 0)})
+            vertices->push_back(corner);
+    osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
+    geometry->setVertexArray(vertices);
+    geometry->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLES, 0, GLsizei(vertices->size())));
+    for (const std::uint32_t size : {1u, 2u})
+    {
+        osg::ref_ptr<osgVis::ClusterLayout> layout = osgVis::ClusterLayout::build(*geometry, size);
+        ASSERT_TRUE(layout) << size;
+        EXPECT_GE(layout->size(), 12u / size / 2) << size;
+        std::size_t triangles = 0;
+        for (const osgVis::ClusterLayout::Cluster& cluster : layout->clusters())
+        {
+            EXPECT_LE(cluster.indexCount / 3, size);
+            triangles += cluster.indexCount / 3;
+        }
+        EXPECT_EQ(triangles, 12u) << size;
+    }
+}

@@ -139,7 +139,9 @@ std::size_t splitRange(std::vector<std::uint32_t>& order, const std::vector<floa
     std::size_t middle = std::size_t(std::partition(order.begin() + long(begin), order.begin() + long(end),
                                                     [&](std::uint32_t t) { return centroids[3 * t + axis] < cut; }) -
                                      order.begin());
-    const std::size_t quarter = (end - begin) / 4;
+    // note: at least one triangle a side, or a range of 2 or 3 alike triangles (cluster sizes of 1
+    // or 2) would split into itself and nothing, for ever
+    const std::size_t quarter = std::max<std::size_t>(1, (end - begin) / 4);
     if (middle < begin + quarter || middle > end - quarter)
     {
         middle = begin + (end - begin) / 2;
