@@ -1,105 +1,56 @@
 // SPDX-License-Identifier: MIT
 #include "GlfwAppOptions.h"
 
-#include <cmath>
+#include <CommandLine.h>
+
 #include <sstream>
-#include <vector>
 
 namespace osgVis::glfwapp
 {
-namespace
-{
-unsigned parsePositive(const std::string& option, const std::string& text, unsigned largest)
-{
-    std::size_t used = 0;
-    unsigned long value = 0;
-    try
-    {
-        value = std::stoul(text, &used);
-    }
-    catch (const std::exception&)
-    {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || text[0] == '-' || value == 0 || value > largest)
-        throw OptionsError(option + " expects an integer from 1 to " + std::to_string(largest) + ", got '" + text +
-                           "'");
-    return unsigned(value);
-}
-
-void parseSize(const std::string& text, unsigned& width, unsigned& height)
-{
-    const std::size_t x = text.find_first_of("xX");
-    if (x == std::string::npos)
-        throw OptionsError("--size expects WxH (e.g. 1024x768), got '" + text + "'");
-    width = parsePositive("--size", text.substr(0, x), 16384);
-    height = parsePositive("--size", text.substr(x + 1), 16384);
-}
-
-osg::Vec3d parseVector(const std::string& option, const std::string& text)
-{
-    std::istringstream in(text);
-    osg::Vec3d v;
-    char comma1 = 0, comma2 = 0;
-    in >> v.x() >> comma1 >> v.y() >> comma2 >> v.z();
-    const bool finite = std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
-    if (!in || comma1 != ',' || comma2 != ',' || in.peek() != std::istringstream::traits_type::eof() || !finite)
-        throw OptionsError(option + " expects x,y,z (three numbers), got '" + text + "'");
-    return v;
-}
-} // namespace
+using apps::UsageError;
 
 GlfwAppOptions parseOptions(int argc, char** argv)
 {
     GlfwAppOptions options;
     bool eyeGiven = false, centerGiven = false;
-    const std::vector<std::string> args(argv + 1, argv + argc);
-    for (std::size_t i = 0; i < args.size(); ++i)
+    apps::CommandLine line;
+    // --eye and --center: a point, and whether it was given (they are checked together below).
+    const auto point = [&line](const char* name, osg::Vec3d& target, bool& given)
     {
-        const std::string& arg = args[i];
-        auto value = [&]() -> const std::string&
-        {
-            if (i + 1 >= args.size())
-                throw OptionsError(arg + " expects a value");
-            return args[++i];
-        };
-        if (arg == "--help" || arg == "-h")
-            options.help = true;
-        else if (arg == "--mode")
-            options.mode = value();
-        else if (arg == "--size")
-            parseSize(value(), options.width, options.height);
-        else if (arg == "--frames")
-            options.frames = parsePositive(arg, value(), 1000000000);
-        else if (arg == "--screenshot")
-            options.screenshotPath = value();
-        else if (arg == "--eye")
-        {
-            options.eye = parseVector(arg, value());
-            eyeGiven = true;
-        }
-        else if (arg == "--center")
-        {
-            options.center = parseVector(arg, value());
-            centerGiven = true;
-        }
-        else if (arg.size() > 1 && arg[0] == '-')
-            throw OptionsError("unknown option '" + arg + "' (see --help)");
-        else if (options.modelPath.empty())
-            options.modelPath = arg;
-        else
-            throw OptionsError("more than one model given: '" + options.modelPath + "' and '" + arg + "'");
-    }
+        line.value({name},
+                   [name, &target, &given](const std::string& v)
+                   {
+                       const std::array<double, 3> p = apps::parseTriple(name, v);
+                       target.set(p[0], p[1], p[2]);
+                       given = true;
+                   });
+    };
+    line.flag({"--help", "-h"}, options.help)
+        .value({"--mode"}, options.mode)
+        .value({"--size"}, [&](const std::string& v) { apps::parseSize("--size", v, options.width, options.height); })
+        .value({"--frames"}, [&](const std::string& v)
+               { options.frames = unsigned(apps::parseUnsigned("--frames", v, 1, 1000000000)); })
+        .value({"--screenshot"}, options.screenshotPath)
+        .positional(
+            [&](const std::string& v)
+            {
+                if (!options.modelPath.empty())
+                    throw UsageError("more than one model given: '" + options.modelPath + "' and '" + v + "'");
+                options.modelPath = v;
+            });
+    point("--eye", options.eye, eyeGiven);
+    point("--center", options.center, centerGiven);
+    line.parse(argc, argv);
     if (options.help)
         return options;
     if (eyeGiven != centerGiven)
-        throw OptionsError("--eye and --center go together");
+        throw UsageError("--eye and --center go together");
     if (eyeGiven && (options.eye - options.center).length2() == 0.0)
-        throw OptionsError("--eye and --center must differ");
+        throw UsageError("--eye and --center must differ");
     options.cameraGiven = eyeGiven;
     // Only a run with a known last frame can capture that frame before it is swapped away.
     if (!options.screenshotPath.empty() && options.frames == 0)
-        throw OptionsError("--screenshot needs --frames N (it captures the last frame)");
+        throw UsageError("--screenshot needs --frames N (it captures the last frame)");
     return options;
 }
 

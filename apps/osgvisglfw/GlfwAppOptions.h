@@ -4,16 +4,10 @@
 // frame limit, screenshot and fixed camera that make a run scriptable.
 #include <osg/Vec3d>
 
-#include <stdexcept>
 #include <string>
 
 namespace osgVis::glfwapp
 {
-struct OptionsError : std::runtime_error
-{
-    using std::runtime_error::runtime_error;
-};
-
 struct GlfwAppOptions
 {
     std::string modelPath;               // any OSG-readable file; empty: the built-in demo
@@ -26,7 +20,7 @@ struct GlfwAppOptions
     bool help = false;
 };
 
-// Parses argv; throws OptionsError naming the offending argument.
+// Parses argv; throws apps::UsageError naming the offending argument.
 GlfwAppOptions parseOptions(int argc, char** argv);
 std::string usageText(const std::string& programName);
 } // namespace osgVis::glfwapp

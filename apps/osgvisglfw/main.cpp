@@ -16,6 +16,7 @@
 #include "GlfwAppScene.h"
 #include "GlfwEventAdapter.h"
 
+#include <CommandLine.h>
 #include <PluginPaths.h>
 
 #include <osgVis/Statistics>
@@ -202,7 +203,7 @@ int main(int argc, char** argv)
         }
         return run(options);
     }
-    catch (const OptionsError& e)
+    catch (const osgVis::apps::UsageError& e)
     {
         std::cerr << Program << ": " << e.what() << "\n";
         return 2;

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "RawOptions.h"
 
-#include <sstream>
+#include <CommandLine.h>
 
 namespace osgVis::rawgl
 {
+using apps::UsageError;
+
 std::string rawUsage()
 {
     return "usage: osgvisrawgl MODEL.gltf|MODEL.glb [--walk FILE.walk] [--modes frustum,octree,...]\n"
@@ -37,51 +39,37 @@ std::string rawUsage()
 RawOptions parseRawOptions(int argc, char** argv)
 {
     RawOptions options;
-    for (int i = 1; i < argc; ++i)
-    {
-        const std::string arg = argv[i];
-        auto value = [&]() -> std::string
-        {
-            if (i + 1 >= argc)
-                throw UsageError(arg + " needs a value");
-            return argv[++i];
-        };
-        if (arg == "--help" || arg == "-h")
-            options.help = true;
-        else if (arg == "--walk")
-            options.walk = value();
-        else if (arg == "--modes")
-        {
-            options.modes.clear();
-            std::stringstream list(value());
-            std::string mode;
-            while (std::getline(list, mode, ','))
+    apps::CommandLine line;
+    line.flag({"--help", "-h"}, options.help)
+        .value({"--walk"}, options.walk)
+        .value({"--modes"},
+               [&](const std::string& v)
+               {
+                   options.modes.clear();
+                   for (const std::string& mode : apps::splitList(v))
+                   {
+                       if (mode.empty())
+                           throw UsageError("--modes contains an empty name");
+                       for (const std::string& earlier : options.modes)
+                           if (earlier == mode)
+                               throw UsageError("mode '" + mode + "' is listed twice");
+                       options.modes.push_back(mode);
+                   }
+                   if (options.modes.empty())
+                       throw UsageError("--modes is empty");
+               })
+        .value({"--dump-visible"}, options.dumpDir)
+        .flag({"--pixels"}, options.pixels)
+        .flag({"--show"}, options.show)
+        .flag({"--hierarchy"}, options.hierarchy)
+        .positional(
+            [&](const std::string& v)
             {
-                if (mode.empty())
-                    throw UsageError("--modes contains an empty name");
-                for (const std::string& earlier : options.modes)
-                    if (earlier == mode)
-                        throw UsageError("mode '" + mode + "' is listed twice");
-                options.modes.push_back(mode);
-            }
-            if (options.modes.empty())
-                throw UsageError("--modes is empty");
-        }
-        else if (arg == "--dump-visible")
-            options.dumpDir = value();
-        else if (arg == "--pixels")
-            options.pixels = true;
-        else if (arg == "--show")
-            options.show = true;
-        else if (arg == "--hierarchy")
-            options.hierarchy = true;
-        else if (!arg.empty() && arg[0] == '-')
-            throw UsageError("unknown option '" + arg + "'");
-        else if (!options.model.empty())
-            throw UsageError("more than one model: '" + options.model + "' and '" + arg + "'");
-        else
-            options.model = arg;
-    }
+                if (!options.model.empty())
+                    throw UsageError("more than one model: '" + options.model + "' and '" + v + "'");
+                options.model = v;
+            });
+    line.parse(argc, argv);
     if (!options.help && options.model.empty())
         throw UsageError("no model given");
     return options;

@@ -1,17 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // osgvisrawgl's command line. Parsing only.
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace osgVis::rawgl
 {
-struct UsageError : std::runtime_error
-{
-    using std::runtime_error::runtime_error;
-};
-
 struct RawOptions
 {
     std::string model;                         // MODEL.gltf or MODEL.glb
@@ -24,7 +18,7 @@ struct RawOptions
     bool help = false;
 };
 
-// Throws UsageError naming the offending argument.
+// Throws apps::UsageError naming the offending argument.
 RawOptions parseRawOptions(int argc, char** argv);
 std::string rawUsage();
 } // namespace osgVis::rawgl

@@ -11,6 +11,8 @@
 #include "RawRenderer.h"
 #include "RawScene.h"
 
+#include <CommandLine.h>
+
 #include <osgVis/core/scene/Walk.h>
 #include <osgVis/visapi.h>
 
@@ -356,7 +358,7 @@ int main(int argc, char** argv)
     {
         options = parseRawOptions(argc, argv);
     }
-    catch (const UsageError& e)
+    catch (const osgVis::apps::UsageError& e)
     {
         std::cerr << "osgvisrawgl: " << e.what() << "\n" << rawUsage();
         return 2;

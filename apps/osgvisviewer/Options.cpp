@@ -1,110 +1,62 @@
 // SPDX-License-Identifier: MIT
 #include "Options.h"
 
+#include <CommandLine.h>
 #include <ThreadingModel.h>
 
 #include <sstream>
-#include <vector>
 
 namespace osgVis::viewer
 {
-namespace
-{
-std::uint64_t parseUnsigned(const std::string& option, const std::string& text)
-{
-    std::size_t used = 0;
-    unsigned long long value = 0;
-    try
-    {
-        value = std::stoull(text, &used);
-    }
-    catch (const std::exception&)
-    {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || text[0] == '-')
-        throw OptionsError(option + " expects a non-negative integer, got '" + text + "'");
-    return value;
-}
-
-void parseSize(const std::string& text, unsigned& width, unsigned& height)
-{
-    const std::size_t x = text.find_first_of("xX");
-    if (x == std::string::npos)
-        throw OptionsError("--size expects WxH (e.g. 640x512), got '" + text + "'");
-    const std::uint64_t w = parseUnsigned("--size", text.substr(0, x));
-    const std::uint64_t h = parseUnsigned("--size", text.substr(x + 1));
-    if (w == 0 || h == 0 || w > 16384 || h > 16384)
-        throw OptionsError("--size must lie between 1x1 and 16384x16384, got '" + text + "'");
-    width = unsigned(w);
-    height = unsigned(h);
-}
-} // namespace
+using apps::UsageError;
 
 ViewerOptions parseOptions(int argc, char** argv)
 {
     ViewerOptions options;
     bool modeGiven = false;
-    std::vector<std::string> args(argv + 1, argv + argc);
-    for (std::size_t i = 0; i < args.size(); ++i)
+    apps::CommandLine line;
+    line.flag({"--help", "-h"}, options.help)
+        .value({"--mode"},
+               [&](const std::string& v)
+               {
+                   options.mode = v;
+                   modeGiven = true;
+               })
+        .value({"--walk"}, options.walkPath)
+        .value({"--record"}, options.recordPath)
+        .value({"--headless"}, options.headlessDir)
+        .value({"--size"}, [&](const std::string& v) { apps::parseSize("--size", v, options.width, options.height); })
+        .value({"--generate"}, options.generateKind)
+        .value({"--layout"}, options.forestLayout)
+        .value({"--triangles"},
+               [&](const std::string& v) { options.triangles = apps::parseUnsigned("--triangles", v); })
+        .value({"--seed"}, [&](const std::string& v)
+               { options.seed = std::uint32_t(apps::parseUnsigned("--seed", v, 0, 4294967295u)); })
+        .value({"--threading"}, [&](const std::string& v)
+               { options.threading = apps::threadingModelName(apps::parseThreadingModel(v)); })
+        .value({"--async"},
+               [&](const std::string& v) { options.async = apps::parseOnOff("--async", v, false).front(); })
+        .positional(
+            [&](const std::string& v)
+            {
+                if (!options.scenePath.empty())
+                    throw UsageError("more than one scene given: '" + options.scenePath + "' and '" + v + "'");
+                options.scenePath = v;
+            });
+    try
     {
-        const std::string& arg = args[i];
-        auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size())
-                throw OptionsError(arg + " expects a value");
-            return args[++i];
-        };
-        if (arg == "--help" || arg == "-h")
-            options.help = true;
-        else if (arg == "--mode")
-        {
-            options.mode = value();
-            modeGiven = true;
-        }
-        else if (arg == "--walk")
-            options.walkPath = value();
-        else if (arg == "--record")
-            options.recordPath = value();
-        else if (arg == "--headless")
-            options.headlessDir = value();
-        else if (arg == "--size")
-            parseSize(value(), options.width, options.height);
-        else if (arg == "--generate")
-            options.generateKind = value();
-        else if (arg == "--layout")
-            options.forestLayout = value();
-        else if (arg == "--triangles")
-            options.triangles = parseUnsigned(arg, value());
-        else if (arg == "--seed")
-            options.seed = std::uint32_t(parseUnsigned(arg, value()));
-        else if (arg == "--threading" || arg == "--async")
-        {
-            try
-            {
-                if (arg == "--async")
-                    options.async = apps::parseOnOff(arg, value(), false).front();
-                else
-                    options.threading = apps::threadingModelName(apps::parseThreadingModel(value()));
-            }
-            catch (const apps::ThreadingNameError& error)
-            {
-                throw OptionsError(error.what());
-            }
-        }
-        else if (arg.size() > 1 && arg[0] == '-')
-            throw OptionsError("unknown option '" + arg + "' (see --help)");
-        else if (options.scenePath.empty())
-            options.scenePath = arg;
-        else
-            throw OptionsError("more than one scene given: '" + options.scenePath + "' and '" + arg + "'");
+        line.parse(argc, argv);
+    }
+    catch (const apps::ThreadingNameError& error) // --threading, --async: parsers shared with osgvisbench
+    {
+        throw UsageError(error.what());
     }
     if (options.help)
         return options;
     if (!options.generateKind.empty() && !options.scenePath.empty())
-        throw OptionsError("give either a SCENE file or --generate, not both");
+        throw UsageError("give either a SCENE file or --generate, not both");
     if (options.generateKind.empty() && options.scenePath.empty())
-        throw OptionsError(
-            "no scene given: pass a model file or --generate office|city|floor|tetra|forest (see --help)");
+        throw UsageError("no scene given: pass a model file or --generate office|city|floor|tetra|forest (see --help)");
     // A baked .pvs is there to be walked with its cells and portals.
     const std::string pvs = ".pvs";
     if (!modeGiven && options.scenePath.size() > pvs.size() &&
@@ -140,7 +92,9 @@ std::string usageText(const std::string& programName)
            "  --layout L         forest only: single, line or dense (default dense); docs/scenes.md\n"
            "  --triangles N      size of the generated scene (default 200000)\n"
            "  --seed S           seed of the generated scene (default 1)\n"
-           "  --threading MODEL  OSG threading model of the window: " << apps::threadingModelChoices() << "\n"
+           "  --threading MODEL  OSG threading model of the window: "
+        << apps::threadingModelChoices()
+        << "\n"
            "                     (default: OSG's choice; key n cycles them); --headless renders\n"
            "                     SingleThreaded so captures stay in step with their frame\n"
            "  --async on|off     asynchronous visibility (default off): a worker per view computes the\n"

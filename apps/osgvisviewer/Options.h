@@ -4,16 +4,10 @@
 // which walk to follow and whether to render it offscreen.
 #include <SceneSource.h>
 
-#include <stdexcept>
 #include <string>
 
 namespace osgVis::viewer
 {
-struct OptionsError : std::runtime_error
-{
-    using std::runtime_error::runtime_error;
-};
-
 // The scene, walk and size (SCENE or --generate, --walk, --size) are the SceneRequest part.
 struct ViewerOptions : apps::SceneRequest
 {
@@ -25,7 +19,7 @@ struct ViewerOptions : apps::SceneRequest
     bool help = false;
 };
 
-// Parses argv; throws OptionsError naming the offending argument.
+// Parses argv; throws apps::UsageError naming the offending argument.
 ViewerOptions parseOptions(int argc, char** argv);
 std::string usageText(const std::string& programName);
 } // namespace osgVis::viewer

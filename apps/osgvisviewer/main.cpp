@@ -6,6 +6,7 @@
 #include "Options.h"
 #include <SceneSource.h>
 
+#include <CommandLine.h>
 #include <PluginPaths.h>
 #include <Q3PvsMode.h>
 
@@ -32,7 +33,7 @@ int main(int argc, char** argv)
             osgVis::apps::registerQ3PvsMode();
         checkMode(options.mode);
     }
-    catch (const OptionsError& e)
+    catch (const osgVis::apps::UsageError& e)
     {
         std::cerr << program << ": " << e.what() << "\n";
         return 2;

@@ -29,9 +29,9 @@ TEST(GlfwAppErrors, UnknownOption)
 
 TEST(GlfwAppErrors, BadNumbers)
 {
-    expectFailure("--frames x", 2, "--frames expects an integer from 1 to 1000000000, got 'x'");
-    expectFailure("--frames 0", 2, "--frames expects an integer from 1 to 1000000000, got '0'");
-    expectFailure("--frames 3 --size 0x0", 2, "--size expects an integer from 1 to 16384, got '0'");
+    expectFailure("--frames x", 2, "--frames expects a non-negative integer, got 'x'");
+    expectFailure("--frames 0", 2, "--frames must lie between 1 and 1000000000, got '0'");
+    expectFailure("--frames 3 --size 0x0", 2, "--size must lie between 1x1 and 16384x16384, got '0x0'");
     expectFailure("--frames 3 --size 640", 2, "--size expects WxH (e.g. 1024x768), got '640'");
     expectFailure("--frames 3 --eye 1,2 --center 0,0,0", 2, "--eye expects x,y,z (three numbers), got '1,2'");
     expectFailure("--frames", 2, "--frames expects a value");
