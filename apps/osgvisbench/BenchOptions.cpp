@@ -3,6 +3,7 @@
 
 #include <ThreadingModel.h>
 
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,51 +13,9 @@ namespace osgVis::bench
 {
 namespace
 {
-std::string quotedArgument(const std::string& arg)
-{
-    if (!arg.empty() && arg.find_first_of(" \t\"'\\$") == std::string::npos)
-        return arg;
-    std::string quoted = "'";
-    for (char c : arg)
-        quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
-std::uint64_t parseUnsigned(const std::string& flag, const std::string& text)
-{
-    // note: strtoull accepts a leading '-' and wraps it; reject it here so "--views -3" is an error.
-    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
-        throw UsageError(flag + " expects a non-negative integer, got '" + text + "'");
-    return std::strtoull(text.c_str(), nullptr, 10);
-}
-
-std::vector<std::string> splitList(const std::string& text, char separator)
-{
-    std::vector<std::string> items;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, separator))
-        items.push_back(item);
-    if (!text.empty() && text.back() == separator)
-        items.emplace_back();
-    return items;
-}
-
-// A comma-separated list of integers in [1, limit], e.g. "--speeds 1,2,4".
-std::vector<unsigned> parsePositiveList(const std::string& flag, const std::string& text, unsigned limit)
-{
-    std::vector<unsigned> values;
-    for (const std::string& item : splitList(text, ','))
-    {
-        const std::uint64_t value = parseUnsigned(flag, item);
-        if (value < 1 || value > limit)
-            throw UsageError(flag + " values must lie between 1 and " + std::to_string(limit) + ", got '" + item + "'");
-        values.push_back(unsigned(value));
-    }
-    if (values.empty())
-        throw UsageError(flag + " is empty");
-    return values;
-}
+using apps::CommandLine;
+using apps::parseUnsigned;
+using apps::splitList;
 
 // A comma-separated list of numbers in [0, limit], e.g. "--mask-deltas 0,0.5,1,2".
 std::vector<double> parseNonNegativeList(const std::string& flag, const std::string& text, double limit)
@@ -80,16 +39,6 @@ std::vector<double> parseNonNegativeList(const std::string& flag, const std::str
     return values;
 }
 
-void parseSize(const std::string& text, unsigned& width, unsigned& height)
-{
-    const auto x = text.find_first_of("xX");
-    if (x == std::string::npos)
-        throw UsageError("--size expects WxH (e.g. 640x480), got '" + text + "'");
-    width = unsigned(parseUnsigned("--size", text.substr(0, x)));
-    height = unsigned(parseUnsigned("--size", text.substr(x + 1)));
-    if (width == 0 || height == 0 || width > 16384 || height > 16384)
-        throw UsageError("--size must lie between 1x1 and 16384x16384, got '" + text + "'");
-}
 } // namespace
 
 core::AsyncOptions asyncOptionsOf(const BenchOptions& options)
@@ -102,422 +51,245 @@ core::AsyncOptions asyncOptionsOf(const BenchOptions& options)
 
 namespace
 {
-// benchUsage()'s text, in sections. The synopsis: every option.
-const char* usageSynopsis()
+// Each add...Options below declares the options of one topic; a subcommand takes the topics it
+// needs (subcommandOptions).
+
+// What scene: a file or a generator, and how its drawables are split into clusters.
+void addSceneOptions(CommandLine& line, BenchOptions& options)
 {
-    return "usage: osgvisbench (--scene FILE | --generate office|city|floor|tetra|forest [--layout L]\n"
-           "                   [--triangles N] [--seed S])\n"
-           "                   [--walk FILE|auto|random|orbit] [--save-walk FILE] [--modes osg,osg-oq,exact,frustum,frustum+octree,...]\n"
-           "                   [--views N] [--size WxH] [--supersample K] [--cube | --fov 360]\n"
-           "                   [--speeds 1,2,4,8,16] [--threads 1,2] [--mask-deltas 0,1,2,4,8]\n"
-           "                   [--mask-slowdown K] [--cull-only]\n"
-           "                   [--dynamic] [--paged [--paging-requests N] [--paging-keep N] [--paging-keep-mb M] [--paging-prefetch N]]\n"
-           "                   [--threading MODEL,...] [--async on|off|on,off]\n"
-           "                   [--async-lookahead N] [--async-region X,Y,Z]\n"
-           "                   [--volume X0,Y0,Z0,X1,Y1,Z1|paper [--plane-resolution N] [--planes N]\n"
-           "                    [--volume-face N] [--volume-eyes N] [--volume-repeat N]]\n"
-           "                   [--volume-cells N]\n"
-           "                   [--json OUT.json] [--report DIR [--pictures N]] [--explain] [--backoff on|off]\n"
-           "                   [--oracle-cache DIR]\n"
-           "                   [--dump-visible DIR] [--clusters on|off|N]\n"
-           "                   [--help]\n";
+    line.value({"--scene"}, options.sceneFile)
+        .value({"--generate"}, options.generateKind)
+        .value({"--layout"}, options.forestLayout)
+        .value({"--triangles"}, [&](const std::string& v) { options.triangles = parseUnsigned("--triangles", v); })
+        .value({"--seed"},
+               [&](const std::string& v) { options.seed = std::uint32_t(parseUnsigned("--seed", v, 0, UINT32_MAX)); })
+        .value({"--clusters"},
+               [](const std::string& setting)
+               {
+                   std::string threshold = setting;
+                   if (setting == "on")
+                       threshold = "4096";
+                   else if (setting == "off")
+                       threshold = "0";
+                   else
+                       parseUnsigned("--clusters", setting);
+                   // note: every extraction of the run (the bench's, each mode's VisibilityGroup) reads it
+                   ::setenv("OSGVIS_CLUSTER_THRESHOLD", threshold.c_str(), 1);
+               });
 }
 
-// What the bench does, and the walk's options.
-const char* usageOverviewAndWalkOptions()
+// Which walk, the views made of it, and the modes that cull them.
+void addWalkAndModeOptions(CommandLine& line, BenchOptions& options)
 {
-    return "\n"
-           "Renders every mode over the same walk in one process and measures it against the\n"
-           "exact-visibility oracle (docs/benchmark.md). A module chain is written with '+'; a name\n"
-           "osgVis lacks loads the plugin osgvis_module_<name>.so from OSGVIS_MODULE_PATH or\n"
-           "lib/osgvis-modules (docs/visapi.md).\n"
-           "Default modes: osg,frustum,exact.\n"
-           "--walk: a walk file (docs/walk-format.md), auto (eyes at a person's height in the model's\n"
-           "  free space, never inside solid geometry), random (300 views: those eyes jittered, each\n"
-           "  looking in a random direction, seeded by --seed: views nobody tuned) or orbit (around\n"
-           "  the model). Default: the walk\n"
-           "  beside the scene, the generator's walk with --generate, else auto (an orbit when the\n"
-           "  model has nowhere to stand).\n"
-           "--save-walk FILE: write the walk followed (an automatic one, too) as a walk file, to edit\n"
-           "  or replay with --walk FILE.\n"
-           "--dump-visible DIR: instead of the benchmark, write DIR/<mode>.visible for every module-chain\n"
-           "  mode: per view of the walk (after --views and --cube), the sorted canonical identities of\n"
-           "  the objects the chain answers visible, culled on the scene as a VisibilityGroup extracts it\n"
-           "  (glTF node path and primitive, \"n0/n3#p1\", for models read by osgVis's glTF plugin; object\n"
-           "  ids otherwise). No rendering; osgvisrawgl writes the same files from its own loader\n"
-           "  (docs/visapi.md, \"A renderer that is not OSG\").\n"
-           "--cube: every walk key becomes six 90-degree square views (HxH, H the walk's height),\n"
-           "  the faces of a cube around the eye, so every metric covers the full sphere.\n";
-}
-
-// The cull-only sweeps.
-const char* usageSweepOptions()
-{
-    return "--speeds, --threads: also time each module-chain mode's cull alone (no rendering) with\n"
-           "  the observer S times faster (every S-th walk key) under T TBB threads, and check that\n"
-           "  every thread count gives the same visible sets. A missing list means speed 1 or\n"
-           "  TBB's default thread count.\n"
-           "--mask-deltas: also run every mode with a mask stage (mask, mask-approx, mask-distance,\n"
-           "  e.g. frustum+mask) cull-only over the same views once per image-space shrinkage\n"
-           "  Delta (frame pixels; the mode's own options otherwise) and report the fraction of\n"
-           "  critical frames and their reasons, the median/p99 ms of each step of a critical\n"
-           "  frame (select, rasterize, pyramid, mark), the median cull ms of critical and other\n"
-           "  frames, and the drawn fraction. The mask stages' top eye speed V (MaskOptions::\n"
-           "  maxEyeSpeed) is set to the observer's measured top speed over the swept frames (an\n"
-           "  application knows its camera's top speed), 1.01 x max |eye step| / time step.\n"
-           "--mask-slowdown K: the Delta sweep's observer walks the same path K times slower\n"
-           "  (default 1): K-1 frames between consecutive views, the eye moved linearly with the\n"
-           "  earlier view's orientation, at the views' own time step, so consecutive frames are\n"
-           "  close and the masks' temporal coherence shows. At most 200000 frames (views x K).\n"
-           "--cull-only: run just these sweeps (no oracle, no GL).\n";
-}
-
-// The dynamic walk and the paged database.
-const char* usageDynamicAndPagedOptions()
-{
-    return "--dynamic: a dynamic walk (osg and module-chain modes): 12 cars drive along the walk's\n"
-           "  streets every frame, 3 buildings are dropped on existing ones at 1/4 and at 1/2 of\n"
-           "  the views, 3 are deleted at 1/3 and at 2/3 (seeded by --seed); the oracle renders\n"
-           "  every frame's scene, and the number of changes applied is printed.\n"
-           "--paged: the scene is a paged database (osgvisgen --paged DIR: --scene DIR/root.osgb, walk\n"
-           "  DIR/root.walk) walked with OSG's DatabasePager running, frames back to back; osg and\n"
-           "  module-chain modes, each from a fresh read of the root. Per mode: tile files requested,\n"
-           "  tiles loaded and expired, MB read, peak resident tiles, peak heap growth, pop-in (frames,\n"
-           "  objects and pixels the oracle sees on the fully loaded database whose tile was not loaded\n"
-           "  yet), false-invisible among loaded tiles' objects, fps and its ratio to osg\n"
-           "  (docs/paging.md). --scene DIR/x.pvs: a cell-portal bake of the whole database\n"
-           "  (osgvispvs DIR/root.osgb -o DIR/x.pvs), which cellportal modes use for every load\n"
-           "  state; the bench pages the root file it names.\n"
-           "--paging-requests N: of the visible tiles not loaded yet that a nearer one covers on\n"
-           "  screen, a view asks for N per frame, nearest first (default 0: every visible one, as OSG\n"
-           "  does). --paging-keep N: a loaded tile hidden for at most N\n"
-           "  frames keeps its time stamps fresh (default 120), within OSG_MAX_PAGEDLOD.\n"
-           "  --paging-keep-mb M: and within M MB of their geometry's arrays (default 0: no limit).\n"
-           "  --paging-prefetch N: tiles the eye will pass through within N frames at its last step are\n"
-           "  requested ahead at a lower priority (default 0: off), and with a baked cellportal\n"
-           "  PVS the tiles some eye along that path may see.\n";
-}
-
-// The threading table.
-const char* usageThreadingOptions()
-{
-    return "--threading M1,M2 / --async on,off: also render every osg and module-chain mode under each\n"
-           "  OSG threading model (SingleThreaded, CullDrawThreadPerContext, DrawThreadPerContext,\n"
-           "  CullThreadPerCameraDrawThreadPerContext; default SingleThreaded) with asynchronous\n"
-           "  visibility on and/or off (default off), and print the threading table: false-invisible,\n"
-           "  drawn fraction, the cull thread's median ms in osgVis and OSG's cull ms, frames that fell\n"
-           "  back to a synchronous cull, fps and its ratio to the same mode SingleThreaded, and for\n"
-           "  synchronous rows the views whose drawn set differs from the main table's pass. Set\n"
-           "  LP_NUM_THREADS (Mesa) when timing: llvmpipe's threads compete for the same cores.\n"
-           "--async-lookahead N: frames of predicted eye path an async region covers (default 4).\n"
-           "--async-region X,Y,Z: an async region is at least this box around the eye (a bake\n"
-           "  cell's size, for multifocal regions); default: the path alone.\n";
-}
-
-// The volume PVS and the baked cells against the volume oracle.
-const char* usageVolumeOptions()
-{
-    return "--volume X0,Y0,Z0,X1,Y1,Z1 | paper: instead of the walk, the multifocal volume PVS of that\n"
-           "  box of eyes (paper: the view volume of the generated forest's layout, docs/scenes.md),\n"
-           "  timed (median of --volume-repeat N, default 3), against the volume oracle (eyes at the\n"
-           "  box's 8 corners, 6 face centres and --volume-eyes N (default 48) random points, six\n"
-           "  --volume-face N pixel (default 512) cube faces each, objects and triangles). Prints\n"
-           "  objects and triangles kept, culled, facing away from every eye, and missing (exit\n"
-           "  status 1 when any is missing), and the efficacy on the triangles not facing away.\n"
-           "  --plane-resolution N (default 100) and --planes N (default 7) set the planes.\n"
-           "--volume-cells N: with --scene FILE.pvs baked by osgvispvs --method multifocal, N of its\n"
-           "  view cells (evenly spread over them) against the volume oracle (objects): objects the\n"
-           "  oracle sees that a cell's PVS lacks (exit status 1 when any), and the triangles of the\n"
-           "  PVS's objects over those of the objects seen, per cell and on average.\n";
+    const auto number = [](unsigned& target, const char* name)
+    { return [&target, name](const std::string& v) { target = unsigned(parseUnsigned(name, v, 0, UINT32_MAX)); }; };
+    line.value({"--walk"}, options.walkFile)
+        .value({"--save-walk"}, options.saveWalkFile)
+        .value({"--views"}, number(options.views, "--views"))
+        .value({"--size"}, [&](const std::string& v) { apps::parseSize("--size", v, options.width, options.height); })
+        .flag({"--cube"}, options.cube)
+        .value({"--fov"},
+               [&](const std::string& degrees)
+               {
+                   // The only field of view chosen here is the full sphere; narrower ones are the walk's.
+                   if (degrees != "360")
+                       throw UsageError("--fov accepts only 360 (the six cube faces, as --cube), got '" + degrees + "'");
+                   options.cube = true;
+               })
+        .value({"--modes"}, [&](const std::string& v) { options.modes = splitList(v, ','); })
+        .value({"--backoff"}, [&](const std::string& v) { options.backOff = apps::parseOnOffValue("--backoff", v); })
+        .value({"--supersample"}, number(options.supersample, "--supersample"));
 }
 
 // The report, the oracle cache and --explain.
-const char* usageOutputOptions()
+void addReportOptions(CommandLine& line, BenchOptions& options)
 {
-    return "--report DIR: also write DIR/index.html, one self-contained page (inline SVG, nothing\n"
-           "  fetched): the table, per-view plots of drawn triangles for every mode against exact and of\n"
-           "  cull ms, false-invisible markers, the progressive and threading tables, and N side-by-side\n"
-           "  pictures DIR/view-NNNN.png (--pictures N, default 6, 0 for none) of views spread over the\n"
-           "  walk: osg's frame | the best mode's frame | a top-down map of what the best mode drew\n"
-           "  (green), culled in the frustum (red), left outside it (grey), and the frustum (yellow).\n"
-           "  The best mode is the conservative module chain with the highest fps.\n"
-           "--oracle-cache DIR: keep the oracle's exact sets of the rendered walk in DIR, one file per\n"
-           "  model geometry, views, size and --supersample, and take them from there when a later run\n"
-           "  has the same (then the oracle renders nothing). Not for --dynamic or --paged runs.\n"
-           "--explain: also say why culling does or does not work on the model: the objects that\n"
-           "  are no occluder, by reason (transparent, alpha test, polygon mode, no depth write, under\n"
-           "  LOD/Switch, dynamic, degenerate, too small, ...), the occluder polygons the object-space\n"
-           "  methods get, objects whose bounds span more than half the model, and the objects the\n"
-           "  best mode never culled although hidden, largest first, with the likeliest reason.\n";
-}
-
-// How the modes cull: clusters, back-off.
-const char* usageCullingOptions()
-{
-    return "--clusters on|off|N: split drawables of at least N triangles (on: the default, 4096) into\n"
-           "  clusters culled as objects (docs/clusters.md); off keeps every drawable whole. Sets\n"
-           "  OSGVIS_CLUSTER_THRESHOLD for every extraction of the run. With clusters the oracle's\n"
-           "  objects are narrowed to clusters by a triangle-ID render.\n"
-           "--backoff on: measure the modes as an application with do no harm gets them: each\n"
-           "  VisibilityGroup times frames with and without its chain and skips the chain where it\n"
-           "  costs more than it saves (core::BackOff; timing-dependent, so off by default: each\n"
-           "  method is measured alone).\n";
-}
-
-// What every rendered mode is measured on, and the exit status.
-const char* usageExitStatus()
-{
-    return "Every rendered mode also gets its mis-drawn pixels: pixels of the oracle's exact image\n"
-           "  (display resolution) showing an object the mode culled (where the oracle counts\n"
-           "  pixels per object). Approximate modes report false-invisible objects, never fail.\n"
-           "Exit status: 0 ok, 1 a conservative mode culled a visible object, gave different\n"
-           "visible sets at different thread counts or threading models, or the run failed;\n"
-           "2 bad command line.\n";
-}
-} // namespace
-
-std::string benchUsage()
-{
-    return std::string(usageSynopsis()) + usageOverviewAndWalkOptions() + usageSweepOptions() +
-           usageDynamicAndPagedOptions() + usageThreadingOptions() + usageVolumeOptions() + usageOutputOptions() +
-           usageCullingOptions() + usageExitStatus();
-}
-
-namespace
-{
-// The argument being parsed; value() takes the next one as its value.
-struct Argument
-{
-    int argc;
-    char** argv;
-    int index;
-    std::string flag;
-
-    std::string value()
-    {
-        if (index + 1 >= argc)
-            throw UsageError(flag + " needs a value");
-        return argv[++index];
-    }
-};
-
-// Each parse...Option below takes the options of one topic and returns whether `arg` was one of them. Flags
-// are matched whole, so the order in which the topics are tried does not matter.
-
-// What scene: a file or a generator, and how its drawables are split into clusters.
-bool parseSceneOption(Argument& arg, BenchOptions& options)
-{
-    const std::string& flag = arg.flag;
-    if (flag == "--scene")
-        options.sceneFile = arg.value();
-    else if (flag == "--generate")
-        options.generateKind = arg.value();
-    else if (flag == "--layout")
-        options.forestLayout = arg.value();
-    else if (flag == "--triangles")
-        options.triangles = parseUnsigned(flag, arg.value());
-    else if (flag == "--seed")
-        options.seed = std::uint32_t(parseUnsigned(flag, arg.value()));
-    else if (flag == "--clusters")
-    {
-        const std::string setting = arg.value();
-        std::string threshold = setting;
-        if (setting == "on")
-            threshold = "4096";
-        else if (setting == "off")
-            threshold = "0";
-        else
-            parseUnsigned("--clusters", setting);
-        // note: every extraction of the run (the bench's, each mode's VisibilityGroup) reads it
-        ::setenv("OSGVIS_CLUSTER_THRESHOLD", threshold.c_str(), 1);
-    }
-    else
-        return false;
-    return true;
-}
-
-// Which walk, and the views made of it.
-bool parseWalkOption(Argument& arg, BenchOptions& options)
-{
-    const std::string& flag = arg.flag;
-    if (flag == "--walk")
-        options.walkFile = arg.value();
-    else if (flag == "--save-walk")
-        options.saveWalkFile = arg.value();
-    else if (flag == "--views")
-        options.views = unsigned(parseUnsigned(flag, arg.value()));
-    else if (flag == "--size")
-        parseSize(arg.value(), options.width, options.height);
-    else if (flag == "--cube")
-        options.cube = true;
-    else if (flag == "--fov")
-    {
-        // The only field of view chosen here is the full sphere; narrower ones are the walk's.
-        const std::string degrees = arg.value();
-        if (degrees != "360")
-            throw UsageError("--fov accepts only 360 (the six cube faces, as --cube), got '" + degrees + "'");
-        options.cube = true;
-    }
-    else
-        return false;
-    return true;
-}
-
-// Which modes, and how they and the oracle run.
-bool parseModeOption(Argument& arg, BenchOptions& options)
-{
-    const std::string& flag = arg.flag;
-    if (flag == "--modes")
-        options.modes = splitList(arg.value(), ',');
-    else if (flag == "--backoff")
-    {
-        const std::string setting = arg.value();
-        if (setting != "on" && setting != "off")
-            throw UsageError("--backoff takes on or off, got '" + setting + "'");
-        options.backOff = setting == "on";
-    }
-    else if (flag == "--supersample")
-        options.supersample = unsigned(parseUnsigned(flag, arg.value()));
-    else
-        return false;
-    return true;
-}
-
-// Where the results go.
-bool parseOutputOption(Argument& arg, BenchOptions& options)
-{
-    const std::string& flag = arg.flag;
-    if (flag == "--dump-visible")
-        options.dumpVisibleDir = arg.value();
-    else if (flag == "--report")
-        options.reportDir = arg.value();
-    else if (flag == "--pictures")
-    {
-        const std::uint64_t count = parseUnsigned(flag, arg.value());
-        if (count > 1000)
-            throw UsageError("--pictures must lie between 0 and 1000");
-        options.pictures = int(count);
-    }
-    else if (flag == "--explain")
-        options.explain = true;
-    else if (flag == "--json")
-        options.jsonFile = arg.value();
-    else if (flag == "--oracle-cache")
-        options.oracleCacheDir = arg.value();
-    else
-        return false;
-    return true;
+    line.value({"--report"}, options.reportDir)
+        .value({"--pictures"},
+               [&](const std::string& v) { options.pictures = int(parseUnsigned("--pictures", v, 0, 1000)); })
+        .flag({"--explain"}, options.explain)
+        .value({"--oracle-cache"}, options.oracleCacheDir);
 }
 
 // The cull-only sweeps: observer speeds, thread counts, the mask modes' Delta.
-bool parseSweepOption(Argument& arg, BenchOptions& options)
+void addSweepOptions(CommandLine& line, BenchOptions& options)
 {
-    const std::string& flag = arg.flag;
-    if (flag == "--speeds")
-        options.speeds = parsePositiveList(flag, arg.value(), 1000);
-    else if (flag == "--threads")
-        options.threads = parsePositiveList(flag, arg.value(), 256);
-    else if (flag == "--mask-deltas")
-        options.maskDeltas = parseNonNegativeList(flag, arg.value(), 1000.0);
-    else if (flag == "--mask-slowdown")
-    {
-        const std::uint64_t slowdown = parseUnsigned(flag, arg.value());
-        if (slowdown < 1 || slowdown > MaxMaskSweepFrames)
-            throw UsageError(flag + " must lie between 1 and " + std::to_string(MaxMaskSweepFrames) + ", got '" +
-                             std::to_string(slowdown) + "'");
-        options.maskSlowdown = unsigned(slowdown);
-    }
-    else if (flag == "--cull-only")
-        options.cullOnly = true;
-    else
-        return false;
-    return true;
+    line.value({"--speeds"}, [&](const std::string& v) { options.speeds = apps::parseUnsignedList("--speeds", v, 1, 1000); })
+        .value({"--threads"},
+               [&](const std::string& v) { options.threads = apps::parseUnsignedList("--threads", v, 1, 256); })
+        .value({"--mask-deltas"},
+               [&](const std::string& v) { options.maskDeltas = parseNonNegativeList("--mask-deltas", v, 1000.0); })
+        .value({"--mask-slowdown"},
+               [&](const std::string& v)
+               { options.maskSlowdown = unsigned(parseUnsigned("--mask-slowdown", v, 1, MaxMaskSweepFrames)); })
+        .flag({"--cull-only"}, options.cullOnly);
 }
 
-// The dynamic walk and the paged database's walk.
-bool parseDynamicAndPagedOption(Argument& arg, BenchOptions& options)
+// The paged database's walk.
+void addPagingOptions(CommandLine& line, BenchOptions& options)
 {
-    const std::string& flag = arg.flag;
-    if (flag == "--dynamic")
-        options.dynamic = true;
-    else if (flag == "--paged")
-        options.paged = true;
-    else if (flag == "--paging-requests")
-        options.paging.requestsPerFrame = unsigned(parseUnsigned(flag, arg.value()));
-    else if (flag == "--paging-keep")
-        options.paging.keepFrames = unsigned(parseUnsigned(flag, arg.value()));
-    else if (flag == "--paging-keep-mb")
-        options.paging.keepBytes = parseUnsigned(flag, arg.value()) * 1000000u;
-    else if (flag == "--paging-prefetch")
-        options.paging.prefetchFrames = unsigned(parseUnsigned(flag, arg.value()));
-    else
-        return false;
-    return true;
+    PagingOptions& paging = options.paging;
+    line.value({"--paging-requests"},
+               [&](const std::string& v) { paging.requestsPerFrame = unsigned(parseUnsigned("--paging-requests", v, 0, UINT32_MAX)); })
+        .value({"--paging-keep"},
+               [&](const std::string& v) { paging.keepFrames = unsigned(parseUnsigned("--paging-keep", v, 0, UINT32_MAX)); })
+        .value({"--paging-keep-mb"},
+               [&](const std::string& v) { paging.keepBytes = parseUnsigned("--paging-keep-mb", v, 0, 1u << 30) * 1000000u; })
+        .value({"--paging-prefetch"},
+               [&](const std::string& v) { paging.prefetchFrames = unsigned(parseUnsigned("--paging-prefetch", v, 0, UINT32_MAX)); });
 }
 
-// The multifocal volume PVS and the baked cells checked against the volume oracle.
-bool parseVolumeOption(Argument& arg, BenchOptions& options)
+// The multifocal volume PVS and the volume oracle (the oracle's two also check baked cells).
+void addVolumeOracleOptions(CommandLine& line, BenchOptions& options)
 {
-    const std::string& flag = arg.flag;
-    if (flag == "--volume")
-        options.volume = arg.value();
-    else if (flag == "--plane-resolution")
-        options.planeResolution = unsigned(parseUnsigned(flag, arg.value()));
-    else if (flag == "--planes")
-        options.planesPerDirection = unsigned(parseUnsigned(flag, arg.value()));
-    else if (flag == "--volume-face")
-        options.volumeFaceSize = unsigned(parseUnsigned(flag, arg.value()));
-    else if (flag == "--volume-eyes")
-        options.volumeEyes = unsigned(parseUnsigned(flag, arg.value()));
-    else if (flag == "--volume-repeat")
-        options.volumeRepeat = unsigned(parseUnsigned(flag, arg.value()));
-    else if (flag == "--volume-cells")
-        options.volumeCells = unsigned(parseUnsigned(flag, arg.value()));
-    else
-        return false;
-    return true;
+    line.value({"--volume-face"}, [&](const std::string& v) { options.volumeFaceSize = unsigned(parseUnsigned("--volume-face", v, 0, UINT32_MAX)); })
+        .value({"--volume-eyes"}, [&](const std::string& v) { options.volumeEyes = unsigned(parseUnsigned("--volume-eyes", v, 0, UINT32_MAX)); });
+}
+
+void addVolumeOptions(CommandLine& line, BenchOptions& options)
+{
+    addVolumeOracleOptions(line, options);
+    line.value({"--volume"}, options.volume)
+        .value({"--plane-resolution"}, [&](const std::string& v) { options.planeResolution = unsigned(parseUnsigned("--plane-resolution", v, 0, UINT32_MAX)); })
+        .value({"--planes"}, [&](const std::string& v) { options.planesPerDirection = unsigned(parseUnsigned("--planes", v, 0, UINT32_MAX)); })
+        .value({"--volume-repeat"}, [&](const std::string& v) { options.volumeRepeat = unsigned(parseUnsigned("--volume-repeat", v, 0, UINT32_MAX)); });
+}
+
+void addCellsOptions(CommandLine& line, BenchOptions& options)
+{
+    line.value({"--volume-cells"},
+               [&](const std::string& v) { options.volumeCells = unsigned(parseUnsigned("--volume-cells", v, 0, UINT32_MAX)); });
 }
 
 // The threading table: OSG's threading models and the asynchronous visibility.
-bool parseThreadingOption(Argument& arg, BenchOptions& options)
+void addThreadingOptions(CommandLine& line, BenchOptions& options)
 {
-    const std::string& flag = arg.flag;
-    if (flag == "--threading" || flag == "--async")
+    line.value({"--threading"},
+               [&](const std::string& text)
+               {
+                   for (const std::string& name : splitList(text, ','))
+                       options.threading.push_back(apps::threadingModelName(apps::parseThreadingModel(name)));
+               })
+        .value({"--async"}, [&](const std::string& text) { options.async = apps::parseOnOff("--async", text, true); })
+        .value({"--async-region"},
+               [&](const std::string& text)
+               {
+                   const std::vector<std::string> parts = splitList(text, ',');
+                   const std::vector<double> sizes =
+                       parts.size() == 3 ? parseNonNegativeList("--async-region", parts[0] + "," + parts[1] + "," + parts[2], 1e9)
+                                         : std::vector<double>{};
+                   if (sizes.size() != 3 || !(sizes[0] > 0.0 && sizes[1] > 0.0 && sizes[2] > 0.0))
+                       throw UsageError("--async-region expects three positive sizes X,Y,Z");
+                   for (int a = 0; a < 3; ++a)
+                       options.asyncRegion[a] = sizes[a];
+               })
+        .value({"--async-lookahead"},
+               [&](const std::string& v)
+               {
+                   const std::uint64_t frames = parseUnsigned("--async-lookahead", v);
+                   if (frames < 1 || frames > 1000)
+                       throw UsageError("--async-lookahead must lie between 1 and 1000");
+                   options.asyncLookAhead = unsigned(frames);
+               });
+}
+
+// The older options that choose a run without a subcommand.
+void addRunChoosingOptions(CommandLine& line, BenchOptions& options)
+{
+    line.flag({"--dynamic"}, options.dynamic).flag({"--paged"}, options.paged).value({"--dump-visible"}, options.dumpVisibleDir);
+}
+
+// The options a subcommand (or none: every option) takes.
+CommandLine subcommandOptions(BenchOptions& options)
+{
+    CommandLine line;
+    line.flag({"--help", "-h"}, options.help);
+    addSceneOptions(line, options);
+    if (!options.commandGiven)
     {
-        try
+        addWalkAndModeOptions(line, options);
+        addReportOptions(line, options);
+        addSweepOptions(line, options);
+        addPagingOptions(line, options);
+        addVolumeOptions(line, options);
+        addCellsOptions(line, options);
+        addThreadingOptions(line, options);
+        addRunChoosingOptions(line, options);
+        line.value({"--json"}, options.jsonFile);
+        return line;
+    }
+    switch (options.command)
+    {
+    case BenchCommand::Run:
+        addWalkAndModeOptions(line, options);
+        addReportOptions(line, options);
+        addSweepOptions(line, options);
+        addThreadingOptions(line, options);
+        break;
+    case BenchCommand::Dynamic:
+        addWalkAndModeOptions(line, options);
+        break;
+    case BenchCommand::Paged:
+        addWalkAndModeOptions(line, options);
+        addPagingOptions(line, options);
+        break;
+    case BenchCommand::Volume:
+        addVolumeOptions(line, options);
+        break;
+    case BenchCommand::Cells:
+        addVolumeOracleOptions(line, options);
+        addCellsOptions(line, options);
+        break;
+    case BenchCommand::Dump:
+        addWalkAndModeOptions(line, options);
+        line.value({"--dump-visible"}, options.dumpVisibleDir);
+        return line; // no JSON: the dump is its output
+    }
+    line.value({"--json"}, options.jsonFile);
+    return line;
+}
+
+// The subcommand named by argv[1], if any.
+bool readSubcommand(const std::string& word, BenchOptions& options)
+{
+    const std::pair<const char*, BenchCommand> names[] = {
+        {"run", BenchCommand::Run},       {"dynamic", BenchCommand::Dynamic}, {"paged", BenchCommand::Paged},
+        {"volume", BenchCommand::Volume}, {"cells", BenchCommand::Cells},     {"dump", BenchCommand::Dump}};
+    for (const auto& [name, command] : names)
+        if (word == name)
         {
-            const std::string text = arg.value();
-            if (flag == "--async")
-                options.async = apps::parseOnOff(flag, text, true);
-            else
-                for (const std::string& name : splitList(text, ','))
-                    options.threading.push_back(apps::threadingModelName(apps::parseThreadingModel(name)));
+            options.command = command;
+            options.commandGiven = true;
+            return true;
         }
-        catch (const apps::ThreadingNameError& error)
-        {
-            throw UsageError(error.what());
-        }
-    }
-    else if (flag == "--async-region")
+    return false;
+}
+
+// A subcommand's run as the older options choose it, and what it cannot do without.
+void settleSubcommand(BenchOptions& options)
+{
+    if (options.commandGiven)
     {
-        const std::vector<std::string> parts = splitList(arg.value(), ',');
-        const std::vector<double> sizes =
-            parts.size() == 3 ? parseNonNegativeList(flag, parts[0] + "," + parts[1] + "," + parts[2], 1e9)
-                              : std::vector<double>{};
-        if (sizes.size() != 3 || !(sizes[0] > 0.0 && sizes[1] > 0.0 && sizes[2] > 0.0))
-            throw UsageError("--async-region expects three positive sizes X,Y,Z");
-        for (int a = 0; a < 3; ++a)
-            options.asyncRegion[a] = sizes[a];
+        options.dynamic = options.command == BenchCommand::Dynamic;
+        options.paged = options.command == BenchCommand::Paged;
+        if (options.command == BenchCommand::Volume && options.volume.empty())
+            throw UsageError("volume needs --volume X0,Y0,Z0,X1,Y1,Z1|paper");
+        if (options.command == BenchCommand::Cells && options.volumeCells == 0)
+            throw UsageError("cells needs --volume-cells N (N >= 1)");
+        if (options.command == BenchCommand::Dump && options.dumpVisibleDir.empty())
+            throw UsageError("dump needs --dump-visible DIR");
+        return;
     }
-    else if (flag == "--async-lookahead")
-    {
-        options.asyncLookAhead = unsigned(parseUnsigned(flag, arg.value()));
-        if (options.asyncLookAhead < 1 || options.asyncLookAhead > 1000)
-            throw UsageError("--async-lookahead must lie between 1 and 1000");
-    }
-    else
-        return false;
-    return true;
+    if (options.dynamic)
+        options.command = BenchCommand::Dynamic;
+    else if (options.paged)
+        options.command = BenchCommand::Paged;
+    else if (!options.dumpVisibleDir.empty())
+        options.command = BenchCommand::Dump;
+    else if (!options.volume.empty())
+        options.command = BenchCommand::Volume;
+    else if (options.volumeCells > 0)
+        options.command = BenchCommand::Cells;
 }
 
 // The checks of the options together, by topic.
@@ -642,22 +414,19 @@ BenchOptions parseBenchOptions(int argc, char** argv)
 {
     BenchOptions options;
     options.modes = {"osg", "frustum", "exact"};
-    for (int i = 0; i < argc; ++i)
-        options.commandLine += (i ? " " : "") + quotedArgument(argv[i]);
-
-    for (Argument arg{argc, argv, 1, {}}; arg.index < argc; ++arg.index)
+    options.commandLine = apps::quotedCommandLine(argc, argv);
+    const int first = (argc > 1 && readSubcommand(argv[1], options)) ? 2 : 1;
+    try
     {
-        arg.flag = argv[arg.index];
-        if (arg.flag == "--help" || arg.flag == "-h")
-            options.help = true;
-        else if (!parseSceneOption(arg, options) && !parseWalkOption(arg, options) && !parseModeOption(arg, options) &&
-                 !parseOutputOption(arg, options) && !parseSweepOption(arg, options) &&
-                 !parseDynamicAndPagedOption(arg, options) && !parseVolumeOption(arg, options) &&
-                 !parseThreadingOption(arg, options))
-            throw UsageError("unknown argument '" + arg.flag + "'");
+        subcommandOptions(options).parse(argc, argv, first);
+    }
+    catch (const apps::ThreadingNameError& error)
+    {
+        throw UsageError(error.what());
     }
     if (options.help)
         return options;
+    settleSubcommand(options);
     // In this order: the first fault found is the one reported.
     checkSceneAndModes(options);
     checkDynamicAndPaged(options);

@@ -5,6 +5,8 @@
 #include <osgVis/ViewCuller>
 #include <osgVis/core/async/AsyncVisibility.h>
 
+#include <CommandLine.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -14,9 +16,19 @@
 namespace osgVis::bench
 {
 // Bad command line: main prints the message and the usage, and exits with code 2.
-struct UsageError : std::runtime_error
+using apps::UsageError;
+
+// osgvisbench's subcommands, each a run of its own with only its own options. Without one the
+// command is Run and takes every option, the older --dynamic, --paged, --volume, --volume-cells and
+// --dump-visible choosing the others, so command lines written before the subcommands still work.
+enum class BenchCommand
 {
-    using std::runtime_error::runtime_error;
+    Run,     // the walk rendered in every mode against the oracle (sweeps, threading table, report)
+    Dynamic, // the same while cars drive and buildings come and go (--dynamic)
+    Paged,   // a paged database walked with OSG's DatabasePager (--paged)
+    Volume,  // the multifocal volume PVS against the volume oracle (--volume)
+    Cells,   // a multifocal .pvs's baked cells against the volume oracle (--volume-cells)
+    Dump     // the visible sets of every module chain per view, written out (--dump-visible)
 };
 
 // The most frames the mask sweep's slowed walk may have (views × --mask-slowdown): a bound on its
@@ -25,6 +37,8 @@ constexpr std::size_t MaxMaskSweepFrames = 200000;
 
 struct BenchOptions
 {
+    BenchCommand command = BenchCommand::Run;
+    bool commandGiven = false;        // named on the command line (then only its options are known)
     std::string sceneFile;            // --scene FILE (any format osgDB reads)
     std::string generateKind;         // --generate office|city|floor|tetra|forest (instead of --scene)
     std::string forestLayout;         // --layout single|line|dense, with --generate forest
@@ -75,5 +89,7 @@ struct BenchOptions
 BenchOptions parseBenchOptions(int argc, char** argv);
 // --async-lookahead and --async-region as the asynchronous visibility takes them.
 core::AsyncOptions asyncOptionsOf(const BenchOptions& options);
+// The help of every subcommand (no subcommand: every option), or of one.
 std::string benchUsage();
+std::string benchUsage(const BenchOptions& options);
 } // namespace osgVis::bench

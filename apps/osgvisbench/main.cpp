@@ -94,34 +94,39 @@ int main(int argc, char** argv)
         options = parseBenchOptions(argc, argv);
         if (options.help)
         {
-            std::cout << benchUsage();
+            std::cout << benchUsage(options);
             return 0;
         }
         modes = parseBenchModes(options.modes);
-        if (!options.dumpVisibleDir.empty())
+        if (options.command == BenchCommand::Dump)
             for (const BenchMode& mode : modes)
                 if (mode.kind != BenchMode::Kind::ModuleChain)
                     throw UsageError("--dump-visible writes what a module chain answers; '" + mode.name + "' is none");
     }
     catch (const std::exception& e)
     {
-        std::cerr << "osgvisbench: " << e.what() << "\n" << benchUsage();
+        std::cerr << "osgvisbench: " << e.what()
+                  << "\n(osgvisbench --help lists every option, osgvisbench SUBCOMMAND --help one run's)" << std::endl;
         return 2;
     }
 
     try
     {
-        if (!options.dumpVisibleDir.empty())
+        switch (options.command)
         {
+        case BenchCommand::Dump:
             writeVisibleDumps(options, modes, std::cout);
             return 0;
-        }
-        if (!options.volume.empty())
+        case BenchCommand::Volume:
             return runVolumeBench(options, std::cout);
-        if (options.volumeCells > 0)
+        case BenchCommand::Cells:
             return runBakedCellCheck(options, std::cout);
-        if (options.paged)
+        case BenchCommand::Paged:
             return runPagedBench(options, modes, std::cout);
+        case BenchCommand::Run:
+        case BenchCommand::Dynamic:
+            break;
+        }
         const BenchReport report = options.dynamic ? runDynamicBench(options, modes) : runBench(options, modes);
         writeReportTable(std::cout, report);
         if (!options.jsonFile.empty())

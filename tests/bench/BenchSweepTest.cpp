@@ -132,10 +132,10 @@ TEST(BenchSweep, BadSweepArgumentsExitTwoWithAMessage)
         const char* arguments;
         const char* message;
     } cases[] = {
-        {"--speeds 0", "--speeds values must lie between 1 and"},
+        {"--speeds 0", "--speeds must lie between 1 and"},
         {"--speeds 1,,2", "--speeds expects a non-negative integer"},
         {"--threads x", "--threads expects a non-negative integer, got 'x'"},
-        {"--threads 0", "--threads values must lie between 1 and"},
+        {"--threads 0", "--threads must lie between 1 and"},
         {"--fov 90", "--fov accepts only 360"},
         {"--cull-only", "--cull-only needs a sweep"},
     };
