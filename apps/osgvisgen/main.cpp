@@ -3,6 +3,8 @@
 // writer) and its walk beside it.
 #include "GltfExport.h"
 
+#include <CommandLine.h>
+
 #include <osgVis/gen/Generator.h>
 #include <osgVis/gen/PagedScene.h>
 #include <osgVis/gen/SceneStats.h>
@@ -10,8 +12,6 @@
 #include <osgDB/WriteFile>
 
 #include <chrono>
-#include <cmath>
-#include <cstdlib>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -21,6 +21,8 @@
 
 namespace
 {
+using osgVis::apps::UsageError;
+
 const char* usage =
     "usage: osgvisgen --kind office|city|tetra|floor|forest [--layout L] [--triangles N] [--seed S] -o SCENE\n"
     "       osgvisgen --kind K [...] --paged DIR [--tiles N] [--page-range M] [-o SCENE]\n"
@@ -60,26 +62,6 @@ const char* usage =
     "\n"
     "Presets (layout, tessellation, walk speed, projection) are frozen: see docs/scenes.md.\n";
 
-struct UsageError : std::runtime_error
-{
-    using std::runtime_error::runtime_error;
-};
-
-// Decimal digits only: std::stoull would accept "-1", " 7" and "12abc".
-std::uint64_t parseUnsigned(const std::string& option, const std::string& text, std::uint64_t lo, std::uint64_t hi)
-{
-    bool digits = !text.empty() && text.size() <= 19;
-    for (char c : text)
-        digits = digits && c >= '0' && c <= '9';
-    if (!digits)
-        throw UsageError(option + " needs a whole number, got '" + text + "'");
-    const std::uint64_t value = std::stoull(text);
-    if (value < lo || value > hi)
-        throw UsageError(option + " " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                         "]");
-    return value;
-}
-
 bool isGltfPath(const std::string& path)
 {
     const std::string extension = std::filesystem::path(path).extension().string();
@@ -110,48 +92,34 @@ struct Options
 
 Options parse(int argc, char** argv)
 {
+    namespace gen = osgVis::gen;
+    using osgVis::apps::parseUnsigned;
     Options o;
-    for (int i = 1; i < argc; ++i)
-    {
-        const std::string arg = argv[i];
-        auto value = [&]() -> std::string
-        {
-            if (i + 1 >= argc)
-                throw UsageError(arg + " needs a value");
-            return argv[++i];
-        };
-        if (arg == "--help" || arg == "-h")
-            o.help = true;
-        else if (arg == "--list")
-            o.list = true;
-        else if (arg == "--kind")
-            o.kind = value();
-        else if (arg == "--adversarial")
-            o.adversarial = value();
-        else if (arg == "--layout")
-            o.layout = value();
-        else if (arg == "--triangles")
-            o.triangles = parseUnsigned(arg, value(), osgVis::gen::minTriangles, osgVis::gen::maxTriangles);
-        else if (arg == "--seed")
-            o.seed = std::uint32_t(parseUnsigned(arg, value(), 0, 4294967295u));
-        else if (arg == "-o" || arg == "--output")
-            o.output = value();
-        else if (arg == "--paged")
-            o.paged = value();
-        else if (arg == "--tiles")
-            o.pagedOptions.tiles = unsigned(parseUnsigned(arg, value(), 1, 65536));
-        else if (arg == "--page-range")
-        {
-            const std::string text = value();
-            char* end = nullptr;
-            const double range = std::strtod(text.c_str(), &end);
-            if (text.empty() || *end != '\0' || !(range > 0.0) || !std::isfinite(range))
-                throw UsageError("--page-range needs a positive distance, got '" + text + "'");
-            o.pagedOptions.range = range;
-        }
-        else
-            throw UsageError("unknown argument '" + arg + "'");
-    }
+    const auto setOptional = [](std::optional<std::string>& target)
+    { return [&target](const std::string& value) { target = value; }; };
+    osgVis::apps::CommandLine line;
+    line.flag({"--help", "-h"}, o.help)
+        .flag({"--list"}, o.list)
+        .value({"--kind"}, setOptional(o.kind))
+        .value({"--adversarial"}, setOptional(o.adversarial))
+        .value({"--layout"}, setOptional(o.layout))
+        .value({"--triangles"}, [&](const std::string& value)
+               { o.triangles = parseUnsigned("--triangles", value, gen::minTriangles, gen::maxTriangles); })
+        .value({"--seed"}, [&](const std::string& value)
+               { o.seed = std::uint32_t(parseUnsigned("--seed", value, 0, 4294967295u)); })
+        .value({"-o", "--output"}, o.output)
+        .value({"--paged"}, setOptional(o.paged))
+        .value({"--tiles"}, [&](const std::string& value)
+               { o.pagedOptions.tiles = unsigned(parseUnsigned("--tiles", value, 1, 65536)); })
+        .value({"--page-range"},
+               [&](const std::string& value)
+               {
+                   const double range = osgVis::apps::parseNumber("--page-range", value);
+                   if (!(range > 0.0))
+                       throw UsageError("--page-range needs a positive distance, got '" + value + "'");
+                   o.pagedOptions.range = range;
+               });
+    line.parse(argc, argv);
     if (o.help || o.list)
         return o;
     if (o.kind && o.adversarial)

@@ -15,7 +15,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <thread>
@@ -87,20 +86,27 @@ int main(int argc, char** argv)
     PvsToolOptions o;
     o.pvsFile = "dispatch-bench.pvs";
     o.bake.threads = 1;
-    for (int i = 1; i + 1 < argc; i += 2)
+    const char* usage = "usage: [mpirun -np R] osgvispvs-dispatch-bench --units N --unit-ms MS -o OUT.pvs\n";
+    bool help = false; // the shared parser's errors point to --help
+    try
     {
-        const std::string arg = argv[i];
-        if (arg == "--units")
-            units = std::uint32_t(std::strtoul(argv[i + 1], nullptr, 10));
-        else if (arg == "--unit-ms")
-            unitMs = std::strtod(argv[i + 1], nullptr);
-        else if (arg == "-o")
-            o.pvsFile = argv[i + 1];
-        else
-        {
-            std::cerr << "usage: [mpirun -np R] osgvispvs-dispatch-bench --units N --unit-ms MS -o OUT.pvs\n";
-            return 2;
-        }
+        apps::CommandLine line;
+        line.flag({"--help", "-h"}, help)
+            .value({"--units"}, [&](const std::string& text)
+                   { units = std::uint32_t(apps::parseUnsigned("--units", text, 0, 4294967295u)); })
+            .value({"--unit-ms"}, [&](const std::string& text) { unitMs = apps::parseNumber("--unit-ms", text); })
+            .value({"-o"}, o.pvsFile);
+        line.parse(argc, argv);
+    }
+    catch (const apps::UsageError& e)
+    {
+        std::cerr << "osgvispvs-dispatch-bench: " << e.what() << '\n' << usage;
+        return 2;
+    }
+    if (help)
+    {
+        std::cout << usage;
+        return 0;
     }
     const SyntheticJob job(std::max(units, 1u), unitMs);
     const MpiSession mpi(argc, argv);

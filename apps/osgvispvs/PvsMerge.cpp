@@ -46,23 +46,19 @@ std::string pvsMergeUsage()
 PvsMergeOptions parsePvsMergeOptions(const std::vector<std::string>& arguments)
 {
     PvsMergeOptions o;
-    for (std::size_t i = 0; i < arguments.size(); ++i)
+    apps::CommandLine line;
+    line.flag({"--help", "-h"}, o.help)
+        .value({"-o", "--output"}, o.output)
+        .flag({"--complete"}, o.complete)
+        .positional([&o](const std::string& input) { o.inputs.push_back(input); });
+    try
     {
-        const std::string& arg = arguments[i];
-        if (arg == "--help" || arg == "-h")
-            o.help = true;
-        else if (arg == "-o" || arg == "--output")
-        {
-            if (i + 1 >= arguments.size())
-                throw UsageError(arg + " needs a value");
-            o.output = arguments[++i];
-        }
-        else if (arg == "--complete")
-            o.complete = true;
-        else if (!arg.empty() && arg[0] == '-')
-            throw UsageError("merge: unknown argument '" + arg + "'");
-        else
-            o.inputs.push_back(arg);
+        line.parse(arguments);
+    }
+    catch (const UsageError& e)
+    {
+        // The shared parser's message, said of the subcommand as merge's own errors are.
+        throw UsageError(std::string("merge: ") + e.what());
     }
     if (o.help)
         return o;

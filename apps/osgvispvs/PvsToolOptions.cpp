@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "PvsToolOptions.h"
 
-#include <cmath>
+#include <array>
 #include <cstdlib>
 #include <limits>
 #include <sstream>
@@ -9,54 +9,12 @@
 
 namespace osgVis::pvstool
 {
+using apps::CommandLine;
+using apps::parseNumber;
+using apps::parseUnsigned;
+
 namespace
 {
-std::string shortNumber(double value);
-
-// Whole decimal digits only: strtoull would accept "-1" (wrapping it) and " 7".
-std::uint64_t parseCount(const std::string& flag, const std::string& text, std::uint64_t lo, std::uint64_t hi)
-{
-    if (text.empty() || text.size() > 19 || text.find_first_not_of("0123456789") != std::string::npos)
-        throw UsageError(flag + " expects a non-negative integer, got '" + text + "'");
-    const std::uint64_t value = std::strtoull(text.c_str(), nullptr, 10);
-    if (value < lo || value > hi)
-        throw UsageError(flag + " must lie between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got '" +
-                         text + "'");
-    return value;
-}
-
-// A finite decimal number in [lo, hi]; the whole text must be the number ("0.3x" is an error).
-double parseNumber(const std::string& flag, const std::string& text, double lo, double hi)
-{
-    char* end = nullptr;
-    const double value = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) ||
-        text.find_first_of(" \t") != std::string::npos)
-        throw UsageError(flag + " expects a number, got '" + text + "'");
-    if (value < lo || value > hi)
-        throw UsageError(flag + " must lie between " + shortNumber(lo) + " and " + shortNumber(hi) + ", got '" +
-                         text + "'");
-    return value;
-}
-
-// `count` comma-separated finite numbers ("4,4,2").
-std::vector<double> parseNumbers(const std::string& flag, const std::string& text, std::size_t count)
-{
-    std::vector<double> values;
-    std::size_t start = 0;
-    for (std::size_t k = 0; k < count; ++k)
-    {
-        const std::size_t comma = text.find(',', start);
-        const bool last = k + 1 == count;
-        if (last != (comma == std::string::npos))
-            throw UsageError(flag + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
-        values.push_back(parseNumber(flag, text.substr(start, last ? std::string::npos : comma - start),
-                                     -std::numeric_limits<double>::max(), std::numeric_limits<double>::max()));
-        start = comma + 1;
-    }
-    return values;
-}
-
 // Shortest decimal form: 0.3 and 0.0001 rather than std::to_string's 0.300000 and 0.000100.
 std::string shortNumber(double value)
 {
@@ -153,165 +111,136 @@ std::pair<std::uint32_t, std::uint32_t> parseShard(const std::string& text, cons
         if (!id || !count)
             throw UsageError("--shard slurm needs SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT (run it in a Slurm "
                              "job array, sbatch --array)");
-        const std::uint64_t n = parseCount("SLURM_ARRAY_TASK_COUNT", count, 1, 1000000);
-        const std::uint64_t first = min ? parseCount("SLURM_ARRAY_TASK_MIN", min, 0, 100000000) : 0;
-        const std::uint64_t task = parseCount("SLURM_ARRAY_TASK_ID", id, first, first + n - 1);
+        const std::uint64_t n = parseUnsigned("SLURM_ARRAY_TASK_COUNT", count, 1, 1000000);
+        const std::uint64_t first = min ? parseUnsigned("SLURM_ARRAY_TASK_MIN", min, 0, 100000000) : 0;
+        const std::uint64_t task = parseUnsigned("SLURM_ARRAY_TASK_ID", id, first, first + n - 1);
         return {std::uint32_t(task - first + 1), std::uint32_t(n)};
     }
     const std::size_t slash = text.find('/');
     if (slash == std::string::npos)
         throw UsageError("--shard expects K/N (the K-th of N cell ranges, 1 <= K <= N) or slurm, got '" + text + "'");
-    const std::uint64_t n = parseCount("--shard", text.substr(slash + 1), 1, 1000000);
-    const std::uint64_t k = parseCount("--shard", text.substr(0, slash), 1, n);
+    const std::uint64_t n = parseUnsigned("--shard", text.substr(slash + 1), 1, 1000000);
+    const std::uint64_t k = parseUnsigned("--shard", text.substr(0, slash), 1, n);
     return {std::uint32_t(k), std::uint32_t(n)};
 }
 
 // "A:B" with A < B: cells A to B-1.
-std::pair<std::uint32_t, std::uint32_t> parseCellRange(const std::string& flag, const std::string& range)
+std::pair<std::uint32_t, std::uint32_t> parseCellRange(const std::string& range)
 {
     const std::size_t colon = range.find(':');
     if (colon == std::string::npos)
         throw UsageError("--cells expects A:B (cells A to B-1), got '" + range + "'");
-    const std::uint64_t first = parseCount(flag, range.substr(0, colon), 0, 4000000000u);
-    const std::uint64_t end = parseCount(flag, range.substr(colon + 1), 0, 4000000000u);
+    const std::uint64_t first = parseUnsigned("--cells", range.substr(0, colon), 0, 4000000000u);
+    const std::uint64_t end = parseUnsigned("--cells", range.substr(colon + 1), 0, 4000000000u);
     if (first >= end)
         throw UsageError("--cells A:B needs A < B, got '" + range + "'");
     return std::make_pair(std::uint32_t(first), std::uint32_t(end));
 }
 
-// One argument of the command line; value() takes the next one as its value.
-struct Argument
+// Handlers storing an option's value, checked against [least, most], in `target`.
+template <typename T>
+CommandLine::ValueHandler countInto(const char* option, T& target, std::uint64_t least, std::uint64_t most)
 {
-    std::string text;
-    int& index; // of text in argv: value() moves it on to the value
-    int argc;
-    char** argv;
-
-    std::string value() const
-    {
-        if (index + 1 >= argc)
-            throw UsageError(text + " needs a value");
-        return argv[++index];
-    }
-};
-
-// The parse*Option functions below each handle one topic and return whether the argument was theirs.
-
-// What the tool says besides baking: help, version, progress bar, explanation.
-bool parseGeneralOption(const Argument& arg, PvsToolOptions& o)
-{
-    if (arg.text == "--help" || arg.text == "-h")
-        o.help = true;
-    else if (arg.text == "--version")
-        o.version = true;
-    else if (arg.text == "--progress")
-        o.forceProgress = true;
-    else if (arg.text == "--explain")
-        o.explain = true;
-    else
-        return false;
-    return true;
+    return [option, &target, least, most](const std::string& text)
+    { target = T(parseUnsigned(option, text, least, most)); };
 }
 
-bool parseOutputOption(const Argument& arg, PvsToolOptions& o)
+template <typename T>
+CommandLine::ValueHandler numberInto(const char* option, T& target, double least,
+                                     double most = std::numeric_limits<double>::max())
 {
-    if (arg.text == "-o" || arg.text == "--output")
-        o.pvsFile = arg.value();
-    else if (arg.text == "--json")
-        o.jsonFile = arg.value();
-    else
-        return false;
-    return true;
+    return [option, &target, least, most](const std::string& text) { target = parseNumber(option, text, least, most); };
+}
+
+core::Vec3 vec3(const std::array<double, 3>& xyz)
+{
+    return core::Vec3(xyz[0], xyz[1], xyz[2]);
+}
+
+// The add*Options functions below each declare one topic's options.
+
+// What the tool says besides baking: help, version, progress bar, explanation.
+void addGeneralOptions(CommandLine& line, PvsToolOptions& o)
+{
+    line.flag({"--help", "-h"}, o.help)
+        .flag({"--version"}, o.version)
+        .flag({"--progress"}, o.forceProgress)
+        .flag({"--explain"}, o.explain);
+}
+
+void addOutputOptions(CommandLine& line, PvsToolOptions& o)
+{
+    line.value({"-o", "--output"}, o.pvsFile).value({"--json"}, o.jsonFile);
 }
 
 // The cell-portal bake's subdivision and search, and the threads of either method.
-bool parseBakeOption(const Argument& arg, PvsToolOptions& o)
+void addBakeOptions(CommandLine& line, core::BakeOptions& bake)
 {
-    if (arg.text == "--cells-from")
-    {
-        const std::string from = arg.value();
-        if (from != "faces" && from != "solids")
-            throw UsageError("--cells-from is faces or solids, got '" + from + "'");
-        o.bake.subdivision.fromSolids = from == "solids";
-    }
-    else if (arg.text == "--min-coverage")
-        o.bake.subdivision.minCoverage = parseNumber(arg.text, arg.value(), 0.0, 1.0);
-    else if (arg.text == "--min-face-area")
-        o.bake.subdivision.minFaceArea = parseNumber(arg.text, arg.value(), 0.0, std::numeric_limits<double>::max());
-    else if (arg.text == "--min-cell-size")
-        o.bake.subdivision.minCellSize = parseNumber(arg.text, arg.value(), 0.0, 1.0);
-    else if (arg.text == "--max-cells")
-        o.bake.subdivision.maxCells = std::uint32_t(parseCount(arg.text, arg.value(), 1, 100000000));
-    else if (arg.text == "--stab-budget")
-        o.bake.stabBudget = std::uint32_t(parseCount(arg.text, arg.value(), 1, 4000000000u));
-    else if (arg.text == "--threads")
-        o.bake.threads = unsigned(parseCount(arg.text, arg.value(), 0, 4096));
-    else
-        return false;
-    return true;
+    line.value({"--cells-from"},
+               [&bake](const std::string& from)
+               {
+                   if (from != "faces" && from != "solids")
+                       throw UsageError("--cells-from is faces or solids, got '" + from + "'");
+                   bake.subdivision.fromSolids = from == "solids";
+               })
+        .value({"--min-coverage"}, numberInto("--min-coverage", bake.subdivision.minCoverage, 0.0, 1.0))
+        .value({"--min-face-area"}, numberInto("--min-face-area", bake.subdivision.minFaceArea, 0.0))
+        .value({"--min-cell-size"}, numberInto("--min-cell-size", bake.subdivision.minCellSize, 0.0, 1.0))
+        .value({"--max-cells"}, countInto("--max-cells", bake.subdivision.maxCells, 1, 100000000))
+        .value({"--stab-budget"}, countInto("--stab-budget", bake.stabBudget, 1, 4000000000u))
+        .value({"--threads"}, countInto("--threads", bake.threads, 0, 4096));
 }
 
 // The method, and the planes and near distance of the multifocal one.
-bool parseMethodOption(const Argument& arg, PvsToolOptions& o)
+void addMethodOptions(CommandLine& line, PvsToolOptions& o)
 {
-    if (arg.text == "--method")
-    {
-        o.method = arg.value();
-        if (o.method != "cellportal" && o.method != "multifocal")
-            throw UsageError("--method is cellportal or multifocal, got '" + o.method + "'");
-    }
-    else if (arg.text == "--plane-resolution")
-        o.multifocal.planeResolution = int(parseCount(arg.text, arg.value(), 1, 4096));
-    else if (arg.text == "--planes")
-        o.multifocal.planesPerDirection = int(parseCount(arg.text, arg.value(), 1, 64));
-    else if (arg.text == "--near")
-        o.nearDistance = parseNumber(arg.text, arg.value(), 0.0, std::numeric_limits<double>::max());
-    else
-        return false;
-    return true;
+    line.value({"--method"},
+               [&o](const std::string& method)
+               {
+                   if (method != "cellportal" && method != "multifocal")
+                       throw UsageError("--method is cellportal or multifocal, got '" + method + "'");
+                   o.method = method;
+               })
+        .value({"--plane-resolution"}, countInto("--plane-resolution", o.multifocal.planeResolution, 1, 4096))
+        .value({"--planes"}, countInto("--planes", o.multifocal.planesPerDirection, 1, 64))
+        .value({"--near"}, numberInto("--near", o.nearDistance, 0.0));
 }
 
 // Where the multifocal method's view cells are.
-bool parseViewCellOption(const Argument& arg, PvsToolOptions& o)
+void addViewCellOptions(CommandLine& line, PvsToolOptions& o)
 {
-    if (arg.text == "--grid")
-    {
-        const std::vector<double> v = parseNumbers(arg.text, arg.value(), 6);
-        if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5]))
-            throw UsageError("--grid needs X0 < X1, Y0 < Y1 and Z0 < Z1");
-        o.grid = core::Aabb(core::Vec3(v[0], v[1], v[2]), core::Vec3(v[3], v[4], v[5]));
-    }
-    else if (arg.text == "--walk")
-        o.walkFile = arg.value();
-    else if (arg.text == "--cell-size")
-    {
-        const std::vector<double> v = parseNumbers(arg.text, arg.value(), 3);
-        if (!(v[0] > 0.0 && v[1] > 0.0 && v[2] > 0.0))
-            throw UsageError("--cell-size must be positive along every axis");
-        o.cellSize = core::Vec3(v[0], v[1], v[2]);
-    }
-    else if (arg.text == "--cell-origin")
-    {
-        const std::vector<double> v = parseNumbers(arg.text, arg.value(), 3);
-        o.cellOrigin = core::Vec3(v[0], v[1], v[2]);
-    }
-    else
-        return false;
-    return true;
+    line.value({"--grid"},
+               [&o](const std::string& text)
+               {
+                   const std::vector<std::string> items = apps::splitList(text);
+                   if (items.size() != 6)
+                       throw UsageError("--grid expects 6 comma-separated numbers, got '" + text + "'");
+                   std::vector<double> v;
+                   for (const std::string& item : items)
+                       v.push_back(parseNumber("--grid", item));
+                   if (!(v[0] < v[3] && v[1] < v[4] && v[2] < v[5]))
+                       throw UsageError("--grid needs X0 < X1, Y0 < Y1 and Z0 < Z1");
+                   o.grid = core::Aabb(core::Vec3(v[0], v[1], v[2]), core::Vec3(v[3], v[4], v[5]));
+               })
+        .value({"--walk"}, o.walkFile)
+        .value({"--cell-size"},
+               [&o](const std::string& text)
+               {
+                   const std::array<double, 3> size = apps::parseTriple("--cell-size", text);
+                   if (!(size[0] > 0.0 && size[1] > 0.0 && size[2] > 0.0))
+                       throw UsageError("--cell-size must be positive along every axis");
+                   o.cellSize = vec3(size);
+               })
+        .value({"--cell-origin"},
+               [&o](const std::string& text) { o.cellOrigin = vec3(apps::parseTriple("--cell-origin", text)); });
 }
 
 // Splitting a bake into cell ranges and work units.
-bool parseSplitOption(const Argument& arg, PvsToolOptions& o, const char* (*environment)(const char*))
+void addSplitOptions(CommandLine& line, PvsToolOptions& o, const char* (*environment)(const char*))
 {
-    if (arg.text == "--cells")
-        o.cellRange = parseCellRange(arg.text, arg.value());
-    else if (arg.text == "--shard")
-        o.shard = parseShard(arg.value(), environment);
-    else if (arg.text == "--unit-cells")
-        o.unitCells = std::uint32_t(parseCount(arg.text, arg.value(), 1, 100000000));
-    else
-        return false;
-    return true;
+    line.value({"--cells"}, [&o](const std::string& text) { o.cellRange = parseCellRange(text); })
+        .value({"--shard"}, [&o, environment](const std::string& text) { o.shard = parseShard(text, environment); })
+        .value({"--unit-cells"}, countInto("--unit-cells", o.unitCells, 1, 100000000));
 }
 
 // A bake needs a model and an output, and options of one method only.
@@ -338,18 +267,21 @@ PvsToolOptions parsePvsToolOptions(int argc, char** argv, const char* (*environm
     if (!environment)
         environment = [](const char* name) -> const char* { return std::getenv(name); };
     PvsToolOptions o;
-    for (int i = 1; i < argc; ++i)
-    {
-        const Argument arg{argv[i], i, argc, argv};
-        if (parseGeneralOption(arg, o) || parseOutputOption(arg, o) || parseBakeOption(arg, o) ||
-            parseMethodOption(arg, o) || parseViewCellOption(arg, o) || parseSplitOption(arg, o, environment))
-            continue;
-        if (!arg.text.empty() && arg.text[0] == '-')
-            throw UsageError("unknown argument '" + arg.text + "'");
-        if (!o.modelFile.empty())
-            throw UsageError("one model only: got '" + o.modelFile + "' and '" + arg.text + "'");
-        o.modelFile = arg.text;
-    }
+    CommandLine line;
+    addGeneralOptions(line, o);
+    addOutputOptions(line, o);
+    addBakeOptions(line, o.bake);
+    addMethodOptions(line, o);
+    addViewCellOptions(line, o);
+    addSplitOptions(line, o, environment);
+    line.positional(
+        [&o](const std::string& model)
+        {
+            if (!o.modelFile.empty())
+                throw UsageError("one model only: got '" + o.modelFile + "' and '" + model + "'");
+            o.modelFile = model;
+        });
+    line.parse(argc, argv);
     if (o.help || o.version)
         return o;
     checkComplete(o);

@@ -5,18 +5,16 @@
 #include <osgVis/core/cellportal/CellPortalBake.h>
 #include <osgVis/core/multifocal/VolumeVisibility.h>
 
-#include <optional>
+#include <CommandLine.h>
 
-#include <stdexcept>
+#include <optional>
 #include <string>
 
 namespace osgVis::pvstool
 {
-// Bad command line: main prints the message and a hint to --help, and exits with code 2.
-struct UsageError : std::runtime_error
-{
-    using std::runtime_error::runtime_error;
-};
+// Bad command line (the apps' shared one): main prints the message and a hint to --help, and exits
+// with code 2.
+using apps::UsageError;
 
 struct PvsToolOptions
 {

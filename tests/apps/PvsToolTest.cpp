@@ -141,7 +141,7 @@ TEST(PvsTool, RefusesBadInputNamingIt)
     // Command line: exit 2.
     expectFailure("", 2, "missing the model to bake");
     expectFailure(quoted(dir / "m.osgb"), 2, "missing output path (-o OUT.pvs)");
-    expectFailure(quoted(dir / "m.osgb") + " -o", 2, "-o needs a value");
+    expectFailure(quoted(dir / "m.osgb") + " -o", 2, "-o expects a value");
     expectFailure("m.osgb --max-cells lots" + o, 2, "--max-cells expects a non-negative integer, got 'lots'");
     expectFailure("m.osgb --threads -1" + o, 2, "--threads expects a non-negative integer, got '-1'");
     expectFailure("m.osgb --stab-budget 0" + o, 2, "--stab-budget must lie between 1 and");
@@ -149,7 +149,7 @@ TEST(PvsTool, RefusesBadInputNamingIt)
     expectFailure("m.osgb --min-coverage 0.3x" + o, 2, "--min-coverage expects a number, got '0.3x'");
     expectFailure("m.osgb --min-face-area nan" + o, 2, "--min-face-area expects a number, got 'nan'");
     expectFailure("m.osgb --min-cell-size -0.1" + o, 2, "--min-cell-size must lie between 0 and 1");
-    expectFailure("m.osgb --frobnicate" + o, 2, "unknown argument '--frobnicate'");
+    expectFailure("m.osgb --frobnicate" + o, 2, "unknown option '--frobnicate' (see --help)");
     expectFailure("a.osgb b.osgb" + o, 2, "one model only");
     expectFailure("m.osgb --cells-from voxels" + o, 2, "--cells-from is faces or solids, got 'voxels'");
     expectFailure("m.osgb --method multifocal --cells-from solids" + o, 2, "--cells-from goes with --method cellportal");
@@ -257,8 +257,8 @@ TEST(PvsTool, MergeRefusesWhatDoesNotBelongNamingIt)
     // Command line: exit 2.
     expectFailure("merge" + o, 2, "merge: missing the .pvs files to merge");
     expectFailure("merge " + quoted(a), 2, "merge: missing output path (-o OUT.pvs)");
-    expectFailure("merge " + quoted(a) + " -o", 2, "-o needs a value");
-    expectFailure("merge " + quoted(a) + o + " --cells 1:2", 2, "merge: unknown argument '--cells'");
+    expectFailure("merge " + quoted(a) + " -o", 2, "merge: -o expects a value");
+    expectFailure("merge " + quoted(a) + o + " --cells 1:2", 2, "merge: unknown option '--cells' (see --help)");
 }
 
 TEST(PvsTool, HelpAndVersionTellTheTruth)

@@ -48,24 +48,27 @@ TEST(GenApp, RejectsBadArgumentsWithAClearMessage)
 {
     const std::string out = (scratchDir() / "x.osgb").string();
     expectFailure("--kind castle -o " + out, "unknown scene kind 'castle'");
-    expectFailure("--kind office --triangles lots -o " + out, "--triangles needs a whole number");
-    expectFailure("--kind office --triangles 12abc -o " + out, "--triangles needs a whole number");
-    expectFailure("--kind office --triangles -5 -o " + out, "--triangles needs a whole number");
-    expectFailure("--kind office --triangles 999 -o " + out, "out of range");
-    expectFailure("--kind office --triangles 50000001 -o " + out, "out of range");
+    expectFailure("--kind office --triangles lots -o " + out, "--triangles expects a non-negative integer, got 'lots'");
+    expectFailure("--kind office --triangles 12abc -o " + out,
+                  "--triangles expects a non-negative integer, got '12abc'");
+    expectFailure("--kind office --triangles -5 -o " + out, "--triangles expects a non-negative integer, got '-5'");
+    expectFailure("--kind office --triangles 999 -o " + out,
+                  "--triangles must lie between 1000 and 50000000, got '999'");
+    expectFailure("--kind office --triangles 50000001 -o " + out,
+                  "--triangles must lie between 1000 and 50000000, got '50000001'");
     expectFailure("--kind office --triangles 99999999999999999999999 -o " + out, "--triangles");
-    expectFailure("--kind office --seed x -o " + out, "--seed needs a whole number");
+    expectFailure("--kind office --seed x -o " + out, "--seed expects a non-negative integer, got 'x'");
     expectFailure("--kind office", "missing output path");
-    expectFailure("--kind office -o", "-o needs a value");
+    expectFailure("--kind office -o", "-o expects a value");
     expectFailure("-o " + out, "missing --kind");
     expectFailure("--kind city --adversarial ortho -o " + out, "not both");
     expectFailure("--adversarial no-such-scene -o " + out, "unknown adversarial scene");
-    expectFailure("--frobnicate", "unknown argument '--frobnicate'");
+    expectFailure("--frobnicate", "unknown option '--frobnicate' (see --help)");
     expectFailure("--kind city --layout line -o " + out, "--layout goes with --kind forest only");
     expectFailure("--kind forest --layout jungle -o " + out, "unknown forest layout 'jungle'");
     expectFailure("--kind forest --triangles 23999 -o " + out, "outside [24000");
     expectFailure("--kind tetra --triangles 1000 -o /nonexistent-dir/deeper/x.osgb", "cannot write");
-    expectFailure("--kind city --paged " + out + " --tiles 0", "--tiles 0 is out of range");
+    expectFailure("--kind city --paged " + out + " --tiles 0", "--tiles must lie between 1 and 65536, got '0'");
     expectFailure("--kind city --paged " + out + " --page-range -3", "--page-range needs a positive distance");
     expectFailure("--adversarial ortho --paged " + out, "--paged goes with --kind only");
     expectFailure("--kind city --paged /proc/no-such/dir", "osgvisgen: ");
