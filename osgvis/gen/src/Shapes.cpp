@@ -36,6 +36,15 @@ std::vector<Piece> pieces(const WallSpec& w)
     result.push_back(wallPiece(w, open0, open1, w.z0 + w.doorHeight, top, ALL_FACES));
     return result;
 }
+
+// Four square legs of side `side` standing on z = 0 up to `height`, their low corners at (x, y)
+// for x in `xs` and y in `ys`.
+void addLegs(Mesh& mesh, const double (&xs)[2], const double (&ys)[2], double side, double height)
+{
+    for (double x : xs)
+        for (double y : ys)
+            addBox(mesh, {x, y, 0.0}, {x + side, y + side, height}, NO_BOTTOM);
+}
 } // namespace
 
 void addBox(Mesh& mesh, const osg::Vec3d& lo, const osg::Vec3d& hi, unsigned faces)
@@ -101,35 +110,22 @@ std::vector<osg::BoundingBoxd> wallPieceBounds(const WallSpec& wall)
 
 Mesh deskMesh(const osg::Vec4& colour)
 {
-    Mesh mesh;
-    mesh.name = "desk";
-    mesh.colour = colour;
-    addBox(mesh, {-0.7, -0.35, 0.72}, {0.7, 0.35, 0.75});
-    for (double x : {-0.64, 0.59})
-        for (double y : {-0.29, 0.24})
-            addBox(mesh, {x, y, 0.0}, {x + 0.05, y + 0.05, 0.72}, NO_BOTTOM);
+    Mesh mesh = boxMesh("desk", colour, {-0.7, -0.35, 0.72}, {0.7, 0.35, 0.75});
+    addLegs(mesh, {-0.64, 0.59}, {-0.29, 0.24}, 0.05, 0.72);
     return mesh;
 }
 
 Mesh chairMesh(const osg::Vec4& colour)
 {
-    Mesh mesh;
-    mesh.name = "chair";
-    mesh.colour = colour;
-    addBox(mesh, {-0.225, -0.225, 0.42}, {0.225, 0.225, 0.46});
+    Mesh mesh = boxMesh("chair", colour, {-0.225, -0.225, 0.42}, {0.225, 0.225, 0.46});
     addBox(mesh, {-0.225, -0.225, 0.46}, {0.225, -0.195, 0.9});
-    for (double x : {-0.215, 0.185})
-        for (double y : {-0.215, 0.185})
-            addBox(mesh, {x, y, 0.0}, {x + 0.03, y + 0.03, 0.42}, NO_BOTTOM);
+    addLegs(mesh, {-0.215, 0.185}, {-0.215, 0.185}, 0.03, 0.42);
     return mesh;
 }
 
 Mesh shelfMesh(const osg::Vec4& colour)
 {
-    Mesh mesh;
-    mesh.name = "shelf";
-    mesh.colour = colour;
-    addBox(mesh, {-0.45, -0.175, 0.0}, {-0.43, 0.175, 1.8}, NO_BOTTOM);
+    Mesh mesh = boxMesh("shelf", colour, {-0.45, -0.175, 0.0}, {-0.43, 0.175, 1.8}, NO_BOTTOM);
     addBox(mesh, {0.43, -0.175, 0.0}, {0.45, 0.175, 1.8}, NO_BOTTOM);
     addBox(mesh, {-0.43, -0.175, 0.0}, {0.43, -0.16, 1.8}, NO_BOTTOM);
     for (double z : {0.05, 0.5, 0.95, 1.4, 1.78})

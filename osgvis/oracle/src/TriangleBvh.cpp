@@ -117,19 +117,10 @@ bool TriangleBvh::hitsTriangle(const Ray& ray, const WorldTriangle& triangle, do
 
 bool TriangleBvh::nearest(const Ray& ray, double tMax, double& t, std::uint32_t& object) const
 {
-    if (_nodes.empty())
-        return false;
     bool hit = false;
-    std::uint32_t stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0)
-    {
-        const Node& node = _nodes[stack[--top]];
-        double tEnter;
-        if (!hitsBox(ray, node.bounds, tMax, tEnter))
-            continue;
-        if (node.count == 0)
+    walk(
+        ray, tMax,
+        [&](const Node& node, std::uint32_t* stack, int& top)
         {
             double tLeft = 0.0, tRight = 0.0;
             const bool left = hitsBox(ray, _nodes[node.first].bounds, tMax, tLeft);
@@ -144,20 +135,14 @@ bool TriangleBvh::nearest(const Ray& ray, double tMax, double& t, std::uint32_t&
                 stack[top++] = node.first;
             else if (right)
                 stack[top++] = node.first + 1;
-            continue;
-        }
-        for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
+        },
+        [&](const WorldTriangle& triangle, double tHit)
         {
-            double tHit;
-            if (hitsTriangle(ray, _triangles[i], tMax, tHit))
-            {
-                tMax = tHit;
-                t = tHit;
-                object = _triangles[i].object;
-                hit = true;
-            }
-        }
-    }
+            tMax = tHit;
+            t = tHit;
+            object = triangle.object;
+            hit = true;
+        });
     return hit;
 }
 } // namespace osgVis::oracle

@@ -49,6 +49,11 @@ private:
     };
 
     void build(std::uint32_t index, std::uint32_t first, std::uint32_t count, std::vector<osg::Vec3d>& centroids);
+    // Depth-first over the nodes whose box the ray enters before `tMax` (read at each test, so
+    // onHit may lower it): an inner node's children go on the stack by pushChildren(node, stack,
+    // top), and onHit(triangle, t) is called for each triangle of a leaf hit with t < tMax.
+    template <class PushChildren, class OnHit>
+    void walk(const Ray& ray, const double& tMax, PushChildren&& pushChildren, OnHit&& onHit) const;
     bool hitsBox(const Ray& ray, const osg::BoundingBoxd& box, double tMax, double& tEnter) const;
     bool hitsTriangle(const Ray& ray, const WorldTriangle& triangle, double tMax, double& t) const;
 
@@ -56,7 +61,8 @@ private:
     std::vector<Node> _nodes;
 };
 
-template <class OnHit> void TriangleBvh::forEachHit(const Ray& ray, double tMax, OnHit&& onHit) const
+template <class PushChildren, class OnHit>
+void TriangleBvh::walk(const Ray& ray, const double& tMax, PushChildren&& pushChildren, OnHit&& onHit) const
 {
     if (_nodes.empty())
         return;
@@ -71,16 +77,27 @@ template <class OnHit> void TriangleBvh::forEachHit(const Ray& ray, double tMax,
             continue;
         if (node.count == 0)
         {
-            stack[top++] = node.first;
-            stack[top++] = node.first + 1;
+            pushChildren(node, stack, top);
             continue;
         }
         for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
         {
             double t;
             if (hitsTriangle(ray, _triangles[i], tMax, t))
-                onHit(_triangles[i].object);
+                onHit(_triangles[i], t);
         }
     }
+}
+
+template <class OnHit> void TriangleBvh::forEachHit(const Ray& ray, double tMax, OnHit&& onHit) const
+{
+    walk(
+        ray, tMax,
+        [](const Node& node, std::uint32_t* stack, int& top)
+        {
+            stack[top++] = node.first;
+            stack[top++] = node.first + 1;
+        },
+        [&](const WorldTriangle& triangle, double) { onHit(triangle.object); });
 }
 } // namespace osgVis::oracle

@@ -5,6 +5,8 @@
 // ending on grid points of one common integer segment) are derived in docs/cdt.md.
 #include "ScreenGrid.h"
 
+#include <osgVis/core/geometry/ConvexHull2.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -25,33 +27,6 @@ double cross(const dvec2& o, const dvec2& a, const dvec2& b)
 std::int64_t cross(const cdt::GridPoint& o, const cdt::GridPoint& a, const cdt::GridPoint& b)
 {
     return (std::int64_t(a.x) - o.x) * (std::int64_t(b.y) - o.y) - (std::int64_t(a.y) - o.y) * (std::int64_t(b.x) - o.x);
-}
-
-/// Andrew's monotone chain; counter-clockwise, collinear points dropped.
-template <class P, class Cross>
-void convexHull(std::vector<P>& points, Cross&& turn)
-{
-    std::sort(points.begin(), points.end(), [](const P& a, const P& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-    points.erase(std::unique(points.begin(), points.end(), [](const P& a, const P& b) { return a.x == b.x && a.y == b.y; }),
-                 points.end());
-    if (points.size() < 3)
-        return;
-    std::vector<P> hull(2 * points.size());
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < points.size(); ++i)
-    {
-        while (k >= 2 && turn(hull[k - 2], hull[k - 1], points[i]) <= 0)
-            --k;
-        hull[k++] = points[i];
-    }
-    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;)
-    {
-        while (k >= lower && turn(hull[k - 2], hull[k - 1], points[i]) <= 0)
-            --k;
-        hull[k++] = points[i];
-    }
-    hull.resize(k - 1);
-    points.swap(hull);
 }
 
 /// A polygon vertex with the label of the edge that starts at it: the index of the original edge
@@ -160,7 +135,8 @@ bool ScreenGrid::projectBox(const Aabb& box, std::vector<cdt::GridPoint>& outlin
         points.emplace_back(clip.x / clip.w * _scaleX, clip.y / clip.w * _scaleY);
         nearestW = std::max(nearestW, _orthographic ? -clip.z : 1.0 / clip.w);
     }
-    convexHull(points, [](const dvec2& o, const dvec2& a, const dvec2& b) { return cross(o, a, b); });
+    std::vector<dvec2> hull;
+    convexHullInPlace(points, hull, [](const dvec2& o, const dvec2& a, const dvec2& b) { return cross(o, a, b); });
     if (points.size() < 3)
         return false;
     std::vector<Labelled> poly;
@@ -179,7 +155,10 @@ bool ScreenGrid::projectBox(const Aabb& box, std::vector<cdt::GridPoint>& outlin
     for (const Labelled& v : poly)
         for (int s = 0; s < 4; ++s)
             outline.push_back(roundPoint(v.p + dvec2((s & 1) ? grow : -grow, (s & 2) ? grow : -grow)));
-    convexHull(outline, [](const cdt::GridPoint& o, const cdt::GridPoint& a, const cdt::GridPoint& b) { return cross(o, a, b); });
+    std::vector<cdt::GridPoint> outlineHull;
+    convexHullInPlace(outline, outlineHull,
+                      [](const cdt::GridPoint& o, const cdt::GridPoint& a, const cdt::GridPoint& b)
+                      { return cross(o, a, b); });
     return outline.size() >= 3;
 }
 

@@ -48,14 +48,10 @@ SplitChoice chooseSplit(const Aabb& box, const std::vector<std::uint32_t>& faceI
     for (std::uint32_t id : faceIds)
     {
         const AxialRect& r = faces[id].rect;
-        const int axis = r.axis, u = AxialRect::uAxis(axis), v = AxialRect::vAxis(axis);
+        const int axis = r.axis;
         if (!(r.coordinate > box.min[axis] + minSize) || !(r.coordinate < box.max[axis] - minSize))
             continue;
-        AxialRect clipped = r;
-        clipped.uMin = std::max(r.uMin, box.min[u]);
-        clipped.uMax = std::min(r.uMax, box.max[u]);
-        clipped.vMin = std::max(r.vMin, box.min[v]);
-        clipped.vMax = std::min(r.vMax, box.max[v]);
+        const AxialRect clipped = r.clippedTo(box);
         if (!clipped.empty())
             candidates.push_back({axis, r.coordinate, clipped});
     }

@@ -34,11 +34,7 @@ public:
                                    [](const AxialRect& r, double c) { return r.coordinate < c; });
         for (; it != list.end() && it->coordinate <= region.coordinate + tolerance; ++it)
         {
-            AxialRect r = *it;
-            r.uMin = std::max(r.uMin, region.uMin);
-            r.uMax = std::min(r.uMax, region.uMax);
-            r.vMin = std::max(r.vMin, region.vMin);
-            r.vMax = std::min(r.vMax, region.vMax);
+            const AxialRect r = it->clippedTo(region);
             if (!r.empty())
                 out.push_back(r);
         }

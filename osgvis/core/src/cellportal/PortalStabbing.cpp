@@ -147,10 +147,18 @@ void directionSigns(const OrientedPortal* portals, std::size_t count, int droppe
             allowed[portals[i].rect.axis] &= portals[i].positive ? 1u : 2u;
 }
 
-void boundsForSign(unsigned allowed, double& lo, double& hi)
+// Bounds of the direction variables 0..dims-1 by the signs `allowed` leaves them, the dominant
+// component fixed to +1 (sign 0) or -1 (sign 1).
+void setDirectionBounds(SmallLp& lp, const unsigned* allowed, int dims, int dominant, int sign)
 {
-    lo = (allowed & 2u) ? -1.0 : 0.0;
-    hi = (allowed & 1u) ? 1.0 : 0.0;
+    for (int a = 0; a < dims; ++a)
+    {
+        double lo = (allowed[a] & 2u) ? -1.0 : 0.0;
+        double hi = (allowed[a] & 1u) ? 1.0 : 0.0;
+        if (a == dominant)
+            lo = hi = (sign == 0) ? 1.0 : -1.0;
+        lp.setBounds(a, lo, hi);
+    }
 }
 
 // Plücker relaxation. Variables: direction d (0..2), moment m (3..5), slack t (6). For an edge
@@ -170,15 +178,9 @@ bool pluckerFeasible(const OrientedPortal* portals, std::size_t count, const Fra
             if (!(allowed[dominant] & (sign == 0 ? 1u : 2u)))
                 continue;
             lp.reset(7);
+            setDirectionBounds(lp, allowed, 3, dominant, sign);
             for (int a = 0; a < 3; ++a)
-            {
-                double lo = 0.0, hi = 0.0;
-                boundsForSign(allowed[a], lo, hi);
-                if (a == dominant)
-                    lo = hi = (sign == 0) ? 1.0 : -1.0;
-                lp.setBounds(a, lo, hi);
                 lp.setBounds(3 + a, -momentBound, momentBound);
-            }
             lp.setBounds(6, -16.0, 0.0); // |side| <= |d||a×e| + |m| < 8 in this frame
             lp.setObjective(6, 1.0);
             for (std::size_t i = 0; i < count; ++i)
@@ -273,14 +275,7 @@ bool projectionFeasible(const OrientedPortal* portals, std::size_t count, const 
             if (!(allowed[dominant] & (sign == 0 ? 1u : 2u)))
                 continue;
             lp.reset(4); // d.x, d.y, k, t
-            for (int a = 0; a < 2; ++a)
-            {
-                double lo = 0.0, hi = 0.0;
-                boundsForSign(allowed[a], lo, hi);
-                if (a == dominant)
-                    lo = hi = (sign == 0) ? 1.0 : -1.0;
-                lp.setBounds(a, lo, hi);
-            }
+            setDirectionBounds(lp, allowed, 2, dominant, sign);
             lp.setBounds(2, -offsetBound, offsetBound);
             lp.setBounds(3, -8.0, 0.0); // |side| <= |d||q| + |k| < 3 in this frame
             lp.setObjective(3, 1.0);

@@ -79,12 +79,7 @@ CellGraph statedCellGraph(const Scene& scene, double tolerance)
         bool aIsLow = true;
         if (closestSharedFace(boxA, boxB, centroid, tolerance, rect, aIsLow))
         {
-            const int u = AxialRect::uAxis(rect.axis), v = AxialRect::vAxis(rect.axis);
-            AxialRect clipped = rect;
-            clipped.uMin = std::max(rect.uMin, polygonBox.min[u]);
-            clipped.uMax = std::min(rect.uMax, polygonBox.max[u]);
-            clipped.vMin = std::max(rect.vMin, polygonBox.min[v]);
-            clipped.vMax = std::min(rect.vMax, polygonBox.max[v]);
+            const AxialRect clipped = rect.clippedTo(polygonBox);
             // A polygon off the shared face or edge-on to it still says the cells see each other.
             if (!clipped.empty())
                 rect = clipped;

@@ -134,6 +134,24 @@ MaskLayout maskLayoutFor(const View& view, const MaskOptions& options)
     layout.clipMargin = layout.border + 2.0 * layout.shift + 2.0;
     return layout;
 }
+
+// Depth first over `tree` from its root, a node's left subtree before its right one;
+// visit(index, node) says whether to go below the node. `stack` is scratch.
+template <class Visit> void visitPreorder(const MaskKdTree& tree, std::vector<std::uint32_t>& stack, Visit&& visit)
+{
+    stack.assign(1, tree.root());
+    while (!stack.empty())
+    {
+        const std::uint32_t index = stack.back();
+        stack.pop_back();
+        const MaskKdTree::Node& node = tree.node(index);
+        if (visit(index, node))
+        {
+            stack.push_back(node.right);
+            stack.push_back(node.left);
+        }
+    }
+}
 } // namespace
 
 struct MaskModule::Impl
@@ -935,61 +953,49 @@ void MaskModule::MarkPass::markHierarchy()
 
 void MaskModule::MarkPass::markTree()
 {
-    std::vector<std::uint32_t>& stack = m.nodeStack;
-    stack.assign(1, m.tree.root());
-    while (!stack.empty())
-    {
-        const std::uint32_t index = stack.back();
-        stack.pop_back();
-        const MaskKdTree::Node& node = m.tree.node(index);
-        if (node.objectCount == 0 || node.bounds.empty() ||
-            nodeDecided(node.bounds, node.objectCount, [&](double until) { m.tree.markNode(index, until); }))
-            continue;
-        if (!node.leaf() && node.objectCount >= options.stopObjects)
+    visitPreorder(
+        m.tree, m.nodeStack,
+        [&](std::uint32_t index, const MaskKdTree::Node& node)
         {
-            stack.push_back(node.right);
-            stack.push_back(node.left);
-            continue;
-        }
-        m.tree.forEachObjectBelow(index, [&](ObjectId id)
-                                  { testObject(id, [&](double until) { m.tree.markObject(id, until); }); });
-        recordTested(node.bounds);
-    }
+            if (node.objectCount == 0 || node.bounds.empty() ||
+                nodeDecided(node.bounds, node.objectCount, [&](double until) { m.tree.markNode(index, until); }))
+                return false;
+            if (!node.leaf() && node.objectCount >= options.stopObjects)
+                return true;
+            m.tree.forEachObjectBelow(index, [&](ObjectId id)
+                                      { testObject(id, [&](double until) { m.tree.markObject(id, until); }); });
+            recordTested(node.bounds);
+            return false;
+        });
 }
 
 std::uint32_t MaskModule::applyTreeMarks(double t, VisibleSet& visible)
 {
     Impl& m = *_impl;
     std::uint32_t culled = 0;
-    std::vector<std::uint32_t>& stack = m.nodeStack;
-    stack.assign(1, m.tree.root());
-    while (!stack.empty())
-    {
-        const std::uint32_t index = stack.back();
-        stack.pop_back();
-        const MaskKdTree::Node& node = m.tree.node(index);
-        if (node.objectCount == 0)
-            continue;
-        const bool nodeHidden = node.stamp > t;
-        if (!nodeHidden && !node.leaf())
-        {
-            stack.push_back(node.right);
-            stack.push_back(node.left);
-            continue;
-        }
-        if (nodeHidden)
-        {
-            m.tree.forEachObjectBelow(index, [&](ObjectId id)
-                                      {
-                                          if (visible.test(id))
-                                              visible.clear(id), ++culled;
-                                      });
-            continue;
-        }
-        for (ObjectId id : node.objects)
-            if (m.tree.objectStamp(id) > t && visible.test(id))
-                visible.clear(id), ++culled;
-    }
+    visitPreorder(m.tree, m.nodeStack,
+                  [&](std::uint32_t index, const MaskKdTree::Node& node)
+                  {
+                      if (node.objectCount == 0)
+                          return false;
+                      const bool nodeHidden = node.stamp > t;
+                      if (!nodeHidden && !node.leaf())
+                          return true;
+                      if (nodeHidden)
+                      {
+                          m.tree.forEachObjectBelow(index,
+                                                    [&](ObjectId id)
+                                                    {
+                                                        if (visible.test(id))
+                                                            visible.clear(id), ++culled;
+                                                    });
+                          return false;
+                      }
+                      for (ObjectId id : node.objects)
+                          if (m.tree.objectStamp(id) > t && visible.test(id))
+                              visible.clear(id), ++culled;
+                      return false;
+                  });
     return culled;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "OcclusionTree.h"
 
+#include <osgVis/core/geometry/ConvexHull2.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,33 +21,6 @@ constexpr double TouchTolerance = 1e-9;
 double cross(const Point& o, const Point& a, const Point& b)
 {
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-}
-
-// Convex hull (counter-clockwise, Andrew's monotone chain); one or two points stay as they are.
-// `hull` is scratch.
-void convexHull(std::vector<Point>& points, std::vector<Point>& hull)
-{
-    std::sort(points.begin(), points.end(),
-              [](const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-    points.erase(std::unique(points.begin(), points.end()), points.end());
-    if (points.size() < 3)
-        return;
-    hull.resize(2 * points.size());
-    std::size_t k = 0;
-    for (const Point& p : points)
-    {
-        while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0.0)
-            --k;
-        hull[k++] = p;
-    }
-    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;)
-    {
-        while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
-            --k;
-        hull[k++] = points[i];
-    }
-    hull.resize(k - 1);
-    points.swap(hull);
 }
 
 // Appends to `out` the part of a convex polygon (or segment, or point) on one side of the line;
@@ -301,7 +276,8 @@ bool OcclusionTree::hidden(const Vec3* points, std::size_t count, const Aabb& bo
     for (std::size_t i = 0; i < count; ++i)
         if (!project(points[i], image[i]))
             return false; // reaches beside or behind the eye
-    convexHull(image, _queryRegion);
+    convexHullInPlace(image, _queryRegion,
+                      [](const Point& o, const Point& a, const Point& b) { return cross(o, a, b); });
     const double nearest = bounds.distance(_eye); // the hull lies in the bounds: no nearer
 
     // Regions on a stack, their points at the end of _queryArena in the same order.

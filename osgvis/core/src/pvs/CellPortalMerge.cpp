@@ -42,11 +42,7 @@ PvsFile mergeCellPortalPvs(const std::vector<PvsFile>& ranges, const ViewCellMer
     for (std::size_t i = 0; i < ranges.size(); ++i)
     {
         const PvsFile& input = ranges[i];
-        if (!input.hasCellPortal)
-            throw PvsFormatError("cannot merge " + name(i) + ": it holds no cell-portal data");
-        if (input.hasViewCells)
-            throw PvsFormatError("cannot merge " + name(i) +
-                                 ": it holds view cells (view-cell and cell-portal files do not merge together)");
+        checkMergedData(input, name(i), MergedData::CellPortal);
         if (i == 0)
         {
             firstGraph = graphBytes(input);

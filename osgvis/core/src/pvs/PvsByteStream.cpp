@@ -86,24 +86,24 @@ std::uint8_t PvsByteReader::u8()
     return _bytes[_pos++];
 }
 
+template <typename T> T PvsByteReader::littleEndian()
+{
+    need(sizeof(T));
+    T value = 0;
+    for (std::size_t i = 0; i < sizeof(T); ++i)
+        value |= T(_bytes[_pos + i]) << (8 * i);
+    _pos += sizeof(T);
+    return value;
+}
+
 std::uint32_t PvsByteReader::u32()
 {
-    need(4);
-    std::uint32_t value = 0;
-    for (int i = 0; i < 4; ++i)
-        value |= std::uint32_t(_bytes[_pos + i]) << (8 * i);
-    _pos += 4;
-    return value;
+    return littleEndian<std::uint32_t>();
 }
 
 std::uint64_t PvsByteReader::u64()
 {
-    need(8);
-    std::uint64_t value = 0;
-    for (int i = 0; i < 8; ++i)
-        value |= std::uint64_t(_bytes[_pos + i]) << (8 * i);
-    _pos += 8;
-    return value;
+    return littleEndian<std::uint64_t>();
 }
 
 double PvsByteReader::f64()

@@ -68,6 +68,7 @@ public:
 
 private:
     void need(std::size_t count);
+    template <typename T> T littleEndian(); // an unsigned integer of sizeof(T) bytes
 
     const std::uint8_t* _bytes;
     std::size_t _pos, _end;

@@ -27,6 +27,29 @@ std::string parentText(std::uint32_t parent)
     return parent == NoStabParent ? std::string("none") : std::to_string(parent);
 }
 
+// "<count> <what> for <cells> cells": a list that must hold one entry per cell, in the reader's
+// and the writer's messages alike.
+std::string perCellText(std::size_t count, const char* what, std::size_t cells)
+{
+    return std::to_string(count) + " " + what + " for " + std::to_string(cells) + " cells";
+}
+
+// Reads a count that must equal the graph's cell count (or be 0 where `noneAllowed`).
+std::uint32_t readPerCellCount(PvsByteReader& s, const CellGraph& g, const char* what, bool noneAllowed = false)
+{
+    const auto cellCount = static_cast<std::uint32_t>(g.cells.size());
+    const std::uint32_t count = s.u32();
+    if (count != cellCount && !(noneAllowed && count == 0))
+        s.fail(perCellText(count, what, cellCount));
+    return count;
+}
+
+void requirePerCell(std::size_t count, const CellGraph& g, const char* what)
+{
+    if (count != g.cells.size())
+        throw PvsFormatError("cannot encode .pvs: " + perCellText(count, what, g.cells.size()));
+}
+
 // Checks preorder with parent/subtreeEnd consistent, and that every node's portal leads from the
 // cell of its parent (the source cell for a first portal) into its own cell.
 void checkStabTree(const PvsByteReader& in, const std::vector<StabNode>& nodes, std::uint32_t sourceCell,
@@ -85,10 +108,7 @@ void readCells(PvsByteReader& s, CellPortalData& d)
 void readCellNames(PvsByteReader& s, CellPortalData& d)
 {
     CellGraph& g = d.graph;
-    const auto cellCount = static_cast<std::uint32_t>(g.cells.size());
-    const std::uint32_t count = s.u32();
-    if (count != 0 && count != cellCount)
-        s.fail(std::to_string(count) + " cell names for " + std::to_string(cellCount) + " cells");
+    const std::uint32_t count = readPerCellCount(s, g, "cell names", true);
     s.requireItems(count, 4);
     g.cellNames.reserve(count);
     for (std::uint32_t c = 0; c < count; ++c)
@@ -150,10 +170,7 @@ void readPortals(PvsByteReader& s, CellPortalData& d)
 void readCellPortals(PvsByteReader& s, CellPortalData& d)
 {
     CellGraph& g = d.graph;
-    const auto cellCount = static_cast<std::uint32_t>(g.cells.size());
-    const std::uint32_t count = s.u32();
-    if (count != cellCount)
-        s.fail(std::to_string(count) + " portal lists for " + std::to_string(cellCount) + " cells");
+    const std::uint32_t count = readPerCellCount(s, g, "portal lists");
     s.requireItems(count, 4);
     g.cellPortals.resize(count);
     for (std::uint32_t c = 0; c < count; ++c)
@@ -174,9 +191,7 @@ void readSources(PvsByteReader& s, CellPortalData& d)
 {
     CellGraph& g = d.graph;
     const auto cellCount = static_cast<std::uint32_t>(g.cells.size());
-    const std::uint32_t count = s.u32();
-    if (count != cellCount)
-        s.fail(std::to_string(count) + " source cells for " + std::to_string(cellCount) + " cells");
+    const std::uint32_t count = readPerCellCount(s, g, "source cells");
     // note: the smallest source is a flag, a node count and two bitsets of one byte each.
     s.requireItems(count, 1 + 4 + 1 + 1);
     d.sources.resize(count);
@@ -223,15 +238,10 @@ void checkCellPortalEncodable(const CellPortalData& d)
     encodableCount(g.cells.size(), "cells");
     encodableCount(g.portals.size(), "portals");
     encodableCount(g.nodes.size(), "kd nodes");
-    if (!g.cellNames.empty() && g.cellNames.size() != g.cells.size())
-        throw PvsFormatError("cannot encode .pvs: " + std::to_string(g.cellNames.size()) + " cell names for " +
-                             std::to_string(g.cells.size()) + " cells");
-    if (g.cellPortals.size() != g.cells.size())
-        throw PvsFormatError("cannot encode .pvs: " + std::to_string(g.cellPortals.size()) + " portal lists for " +
-                             std::to_string(g.cells.size()) + " cells");
-    if (d.sources.size() != g.cells.size())
-        throw PvsFormatError("cannot encode .pvs: " + std::to_string(d.sources.size()) + " source cells for " +
-                             std::to_string(g.cells.size()) + " cells");
+    if (!g.cellNames.empty())
+        requirePerCell(g.cellNames.size(), g, "cell names");
+    requirePerCell(g.cellPortals.size(), g, "portal lists");
+    requirePerCell(d.sources.size(), g, "source cells");
     for (std::size_t c = 0; c < d.sources.size(); ++c)
     {
         const SourceCellVisibility& s = d.sources[c];
@@ -245,94 +255,90 @@ void checkCellPortalEncodable(const CellPortalData& d)
 void writeCellPortalParts(PvsByteWriter& out, const CellPortalData& d)
 {
     const CellGraph& g = d.graph;
-    {
-        const std::size_t body = beginPart(out, BoundsPart);
-        out.box(g.bounds);
-        endPart(out, body);
-    }
-    {
-        const std::size_t body = beginPart(out, CellPart);
-        out.u32(static_cast<std::uint32_t>(g.cells.size()));
-        for (const Aabb& cell : g.cells)
-            out.box(cell);
-        endPart(out, body);
-    }
-    {
-        const std::size_t body = beginPart(out, NamePart);
-        out.u32(static_cast<std::uint32_t>(g.cellNames.size()));
-        for (const std::string& name : g.cellNames)
-            out.string(name);
-        endPart(out, body);
-    }
-    {
-        const std::size_t body = beginPart(out, KdPart);
-        out.u32(static_cast<std::uint32_t>(g.nodes.size()));
-        for (const CellGraph::KdNode& node : g.nodes)
-        {
-            out.u8(node.axis);
-            out.f64(node.split);
-            out.u32(node.children[0]);
-            out.u32(node.children[1]);
-        }
-        endPart(out, body);
-    }
-    {
-        const std::size_t body = beginPart(out, PortalPart);
-        out.u32(static_cast<std::uint32_t>(g.portals.size()));
-        for (const CellPortal& p : g.portals)
-        {
-            out.u8(p.rect.axis);
-            out.f64(p.rect.coordinate);
-            out.f64(p.rect.uMin);
-            out.f64(p.rect.uMax);
-            out.f64(p.rect.vMin);
-            out.f64(p.rect.vMax);
-            out.u32(p.lowCell);
-            out.u32(p.highCell);
-        }
-        endPart(out, body);
-    }
-    {
-        const std::size_t body = beginPart(out, CellPortalPart);
-        out.u32(static_cast<std::uint32_t>(g.cellPortals.size()));
-        for (const std::vector<std::uint32_t>& list : g.cellPortals)
-        {
-            out.u32(encodableCount(list.size(), "portals of one cell"));
-            for (std::uint32_t p : list)
-                out.u32(p);
-        }
-        endPart(out, body);
-    }
-    {
-        const std::size_t body = beginPart(out, SourcePart);
-        out.u32(static_cast<std::uint32_t>(d.sources.size()));
-        for (const SourceCellVisibility& source : d.sources)
-        {
-            out.u8(source.budgetExceeded ? 1 : 0);
-            out.u32(static_cast<std::uint32_t>(source.stabTree.size()));
-            for (const StabNode& node : source.stabTree)
-            {
-                out.u32(node.portal);
-                out.u32(node.cell);
-                out.u32(node.parent);
-                out.u32(node.subtreeEnd);
-            }
-            encodeBitset(source.cellToCell, out);
-            encodeBitset(source.cellToObject, out);
-        }
-        endPart(out, body);
-    }
-    {
-        const std::size_t body = beginPart(out, StatisticsPart);
-        const BakeStatistics& st = d.statistics;
-        out.u32(st.cells);
-        out.u32(st.portals);
-        out.u32(st.budgetExceededCells);
-        out.u64(st.stabNodes);
-        out.f64(st.averageVisibleCells);
-        out.f64(st.averagePvsObjects);
-        endPart(out, body);
-    }
+    writePart(out, BoundsPart, [&] { out.box(g.bounds); });
+    writePart(out, CellPart,
+              [&]
+              {
+                  out.u32(static_cast<std::uint32_t>(g.cells.size()));
+                  for (const Aabb& cell : g.cells)
+                      out.box(cell);
+              });
+    writePart(out, NamePart,
+              [&]
+              {
+                  out.u32(static_cast<std::uint32_t>(g.cellNames.size()));
+                  for (const std::string& name : g.cellNames)
+                      out.string(name);
+              });
+    writePart(out, KdPart,
+              [&]
+              {
+                  out.u32(static_cast<std::uint32_t>(g.nodes.size()));
+                  for (const CellGraph::KdNode& node : g.nodes)
+                  {
+                      out.u8(node.axis);
+                      out.f64(node.split);
+                      out.u32(node.children[0]);
+                      out.u32(node.children[1]);
+                  }
+              });
+    writePart(out, PortalPart,
+              [&]
+              {
+                  out.u32(static_cast<std::uint32_t>(g.portals.size()));
+                  for (const CellPortal& p : g.portals)
+                  {
+                      out.u8(p.rect.axis);
+                      out.f64(p.rect.coordinate);
+                      out.f64(p.rect.uMin);
+                      out.f64(p.rect.uMax);
+                      out.f64(p.rect.vMin);
+                      out.f64(p.rect.vMax);
+                      out.u32(p.lowCell);
+                      out.u32(p.highCell);
+                  }
+              });
+    writePart(out, CellPortalPart,
+              [&]
+              {
+                  out.u32(static_cast<std::uint32_t>(g.cellPortals.size()));
+                  for (const std::vector<std::uint32_t>& list : g.cellPortals)
+                  {
+                      out.u32(encodableCount(list.size(), "portals of one cell"));
+                      for (std::uint32_t p : list)
+                          out.u32(p);
+                  }
+              });
+    writePart(out, SourcePart,
+              [&]
+              {
+                  out.u32(static_cast<std::uint32_t>(d.sources.size()));
+                  for (const SourceCellVisibility& source : d.sources)
+                  {
+                      out.u8(source.budgetExceeded ? 1 : 0);
+                      out.u32(static_cast<std::uint32_t>(source.stabTree.size()));
+                      for (const StabNode& node : source.stabTree)
+                      {
+                          out.u32(node.portal);
+                          out.u32(node.cell);
+                          out.u32(node.parent);
+                          out.u32(node.subtreeEnd);
+                      }
+                      encodeBitset(source.cellToCell, out);
+                      encodeBitset(source.cellToObject, out);
+                  }
+              });
+    writePart(out, StatisticsPart,
+              [&]
+              {
+                  const BakeStatistics& st = d.statistics;
+                  out.u32(st.cells);
+                  out.u32(st.portals);
+                  out.u32(st.budgetExceededCells);
+                  out.u64(st.stabNodes);
+                  out.f64(st.averageVisibleCells);
+                  out.f64(st.averagePvsObjects);
+              });
 }
 
 void readCellPortalParts(PvsByteReader& in, CellPortalData& d, std::uint32_t version)

@@ -38,4 +38,11 @@ template <typename Read> void readPart(PvsByteReader& in, const PvsTag& tag, Rea
     read(body);
     closePart(body);
 }
+// Writes a part carrying `tag` whose body `write()` writes.
+template <typename Write> void writePart(PvsByteWriter& out, const PvsTag& tag, Write&& write)
+{
+    const std::size_t body = beginPart(out, tag);
+    write();
+    endPart(out, body);
+}
 } // namespace osgVis::core

@@ -24,6 +24,18 @@ std::string number(double value)
 }
 } // namespace
 
+void checkMergedData(const PvsFile& input, const std::string& inputName, MergedData kind)
+{
+    const bool viewCells = kind == MergedData::ViewCells;
+    if (!(viewCells ? input.hasViewCells : input.hasCellPortal))
+        throw PvsFormatError("cannot merge " + inputName + ": it holds no " +
+                             (viewCells ? "view cells" : "cell-portal data"));
+    if (viewCells ? input.hasCellPortal : input.hasViewCells)
+        throw PvsFormatError("cannot merge " + inputName + ": it holds " +
+                             (viewCells ? "cell-portal data" : "view cells") +
+                             " (view-cell and cell-portal files do not merge together)");
+}
+
 PvsFormatError notOneBake(const std::string& firstName, const std::string& inputName, const std::string& what)
 {
     return PvsFormatError(inputName + " and " + firstName + " are not ranges of one bake (" + what + ")");

@@ -22,6 +22,15 @@ private:
     const std::vector<std::string>& _names;
 };
 
+// What a merge joins: view-cell and cell-portal files do not merge together.
+enum class MergedData
+{
+    CellPortal,
+    ViewCells,
+};
+// Throws unless `input` holds the `kind` of data the merge joins, and not the other kind.
+void checkMergedData(const PvsFile& input, const std::string& inputName, MergedData kind);
+
 // Throws unless `input` agrees with the first input on the model (fingerprints, object count) and
 // the bake (method, options, near distance).
 void checkSameBake(const PvsFile& first, const PvsFile& input, const std::string& firstName,

@@ -16,11 +16,7 @@ PvsFile mergeViewCellPvs(const std::vector<PvsFile>& ranges, const ViewCellMerge
     for (std::size_t i = 0; i < ranges.size(); ++i)
     {
         const PvsFile& input = ranges[i];
-        if (!input.hasViewCells)
-            throw PvsFormatError("cannot merge " + name(i) + ": it holds no view cells");
-        if (input.hasCellPortal)
-            throw PvsFormatError("cannot merge " + name(i) +
-                                 ": it holds cell-portal data (view-cell and cell-portal files do not merge together)");
+        checkMergedData(input, name(i), MergedData::ViewCells);
         const ViewCellPvs& v = input.viewCells;
         if (v.cells.size() != v.cellIndices.size() || v.pvs.size() != v.cellIndices.size())
             throw PvsFormatError("cannot merge " + name(i) + ": its view cells have " +

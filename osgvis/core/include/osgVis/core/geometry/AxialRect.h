@@ -4,6 +4,7 @@
 /// A rectangle lying in an axis-aligned plane (a cell face, a portal, an opaque axial face).
 #include <osgVis/core/geometry/Aabb.h>
 
+#include <algorithm>
 #include <cstdint>
 
 namespace osgVis::core
@@ -29,5 +30,26 @@ struct AxialRect
         return p;
     }
     Aabb bounds() const { return {corner(0), corner(2)}; }
+    /// This rectangle with its u and v ranges cut to those of `box` (empty() when they miss).
+    AxialRect clippedTo(const Aabb& box) const
+    {
+        AxialRect r = *this;
+        const int u = uAxis(axis), v = vAxis(axis);
+        r.uMin = std::max(uMin, box.min[u]);
+        r.uMax = std::min(uMax, box.max[u]);
+        r.vMin = std::max(vMin, box.min[v]);
+        r.vMax = std::min(vMax, box.max[v]);
+        return r;
+    }
+    /// This rectangle with its u and v ranges cut to those of `region` (of the same axis).
+    AxialRect clippedTo(const AxialRect& region) const
+    {
+        AxialRect r = *this;
+        r.uMin = std::max(uMin, region.uMin);
+        r.uMax = std::min(uMax, region.uMax);
+        r.vMin = std::max(vMin, region.vMin);
+        r.vMax = std::min(vMax, region.vMax);
+        return r;
+    }
 };
 } // namespace osgVis::core
