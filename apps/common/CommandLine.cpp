@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <sstream>
 
 namespace osgVis::apps
@@ -43,6 +44,17 @@ CommandLine& CommandLine::positional(ValueHandler handler)
 {
     positional_ = std::move(handler);
     return *this;
+}
+
+CommandLine& CommandLine::positional(std::string& target, std::string twice)
+{
+    return positional(
+        [&target, twice = std::move(twice)](const std::string& value)
+        {
+            if (!target.empty())
+                throw UsageError(twice + " '" + target + "' and '" + value + "'");
+            target = value;
+        });
 }
 
 const CommandLine::Option* CommandLine::find(const std::string& name) const
@@ -89,6 +101,25 @@ void CommandLine::parse(const std::vector<std::string>& arguments) const
 void CommandLine::parse(int argc, char** argv, int first) const
 {
     parse(std::vector<std::string>(argv + std::min(first, argc), argv + argc));
+}
+
+std::optional<int> readCommandLine(const std::function<bool()>& parse, const std::string& program,
+                                   const std::string& afterError, const std::string& usage)
+{
+    bool help = false;
+    try
+    {
+        help = parse();
+    }
+    catch (const UsageError& e)
+    {
+        std::cerr << program << ": " << e.what() << "\n" << afterError;
+        return 2;
+    }
+    if (!help)
+        return std::nullopt;
+    std::cout << usage;
+    return 0;
 }
 
 std::uint64_t parseUnsigned(const std::string& option, const std::string& text, std::uint64_t least,

@@ -11,6 +11,7 @@
 #include <functional>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,6 +37,9 @@ public:
     CommandLine& value(std::initializer_list<const char*> names, ValueHandler handler);
     // The arguments that are not options ("-" alone is one). Without a handler each is an error.
     CommandLine& positional(ValueHandler handler);
+    // The one argument that is not an option, into `target`; a second is an error in the app's
+    // words: "<twice> '<first>' and '<second>'" (twice: "more than one model given:").
+    CommandLine& positional(std::string& target, std::string twice);
 
     // Reads argv[first] to argv[argc - 1]. Throws UsageError for an unknown option, an option
     // without its value, an unexpected positional argument, or what a handler throws.
@@ -57,6 +61,26 @@ private:
     std::vector<Option> options_;
     ValueHandler positional_;
 };
+
+// What an app's main does with its command line: `parse` reads it and returns whether --help was
+// asked. A UsageError goes to stderr as "<program>: <message>\n" followed by `afterError` (where to
+// find the usage, or the usage itself): exit status 2; --help prints `usage` to stdout: exit status
+// 0. Nothing when the program goes on; any other exception passes through.
+std::optional<int> readCommandLine(const std::function<bool()>& parse, const std::string& program,
+                                   const std::string& afterError, const std::string& usage);
+// The same for an app's usual parser: `options = parse(argc, argv)`, whose `help` is --help.
+template <class Options>
+std::optional<int> readCommandLine(Options& options, Options (*parse)(int, char**), int argc, char** argv,
+                                   const std::string& program, const std::string& afterError, const std::string& usage)
+{
+    return readCommandLine(
+        [&]
+        {
+            options = parse(argc, argv);
+            return options.help;
+        },
+        program, afterError, usage);
+}
 
 // Value parsers: `option` names the option in the error.
 

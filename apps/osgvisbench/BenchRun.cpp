@@ -13,12 +13,12 @@
 #include "OracleCache.h"
 #include "OracleReference.h"
 #include "ProgressiveTable.h"
+#include "TextFile.h"
 #include "ThreadingTable.h"
 #include "ViewPictures.h"
 
 #include <SceneSource.h>
 
-#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -37,6 +37,14 @@ apps::LoadedScene loadBenchScene(const BenchOptions& options)
     source.width = options.width;
     source.height = options.height;
     return apps::loadScene(source);
+}
+
+core::Walk benchWalk(const core::Walk& sceneWalk, const BenchOptions& options)
+{
+    core::Walk walk = subsampledWalk(sceneWalk, options.views);
+    if (options.cube)
+        walk = cubeFaceWalk(walk);
+    return walk;
 }
 
 namespace
@@ -149,19 +157,11 @@ void renderModes(BenchReport& report, const apps::LoadedScene& scene, const core
 BenchReport runBench(const BenchOptions& options, const std::vector<BenchMode>& modes)
 {
     if (!options.reportDir.empty())
-    {
-        std::error_code error;
-        std::filesystem::create_directories(options.reportDir, error);
-        if (!std::filesystem::is_directory(options.reportDir))
-            throw std::runtime_error("cannot create the report folder '" + options.reportDir + "'" +
-                                     (error ? ": " + error.message() : std::string()));
-    }
+        createFolder(options.reportDir, "report folder");
     const apps::LoadedScene scene = loadBenchScene(options);
     if (!options.saveWalkFile.empty())
         scene.walk.save(options.saveWalkFile);
-    core::Walk walk = subsampledWalk(scene.walk, options.views);
-    if (options.cube)
-        walk = cubeFaceWalk(walk);
+    const core::Walk walk = benchWalk(scene.walk, options);
     const std::vector<BenchView> views = makeBenchViews(walk);
     const core::Scene& model = scene.objects->scene;
     std::cerr << "scene: " << scene.name << " (" << model.objects.size() << " objects, " << model.totalTriangles()

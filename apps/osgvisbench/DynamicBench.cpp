@@ -4,7 +4,6 @@
 #include <SceneSource.h>
 #include "BenchRun.h"
 #include "BenchViewer.h"
-#include "DerivedWalks.h"
 #include "DynamicWalk.h"
 #include "EmittedObjects.h"
 #include "Metrics.h"
@@ -111,9 +110,7 @@ BenchReport runDynamicBench(const BenchOptions& options, const std::vector<Bench
             throw std::invalid_argument("--dynamic runs osg and module-chain modes only, not '" + mode.name + "'");
 
     const apps::LoadedScene scene = loadBenchScene(options);
-    core::Walk walk = subsampledWalk(scene.walk, options.views);
-    if (options.cube)
-        walk = cubeFaceWalk(walk);
+    const core::Walk walk = benchWalk(scene.walk, options);
     const std::vector<BenchView> views = makeBenchViews(walk);
     if (views.empty())
         throw std::runtime_error("the walk has no views");

@@ -3,7 +3,7 @@
 
 #include "BenchRun.h"
 #include "BenchView.h"
-#include "DerivedWalks.h"
+#include "TextFile.h"
 
 #include <GltfIdentity.h>
 #include <SceneSource.h>
@@ -79,18 +79,12 @@ void writeVisibleDumps(const BenchOptions& options, const std::vector<BenchMode>
     for (const BenchMode& mode : modes)
         if (mode.kind != BenchMode::Kind::ModuleChain)
             throw UsageError("--dump-visible writes what a module chain answers; '" + mode.name + "' is none");
-    std::error_code error;
-    std::filesystem::create_directories(options.dumpVisibleDir, error);
-    if (!std::filesystem::is_directory(options.dumpVisibleDir))
-        throw std::runtime_error("cannot create the folder '" + options.dumpVisibleDir + "'" +
-                                 (error ? ": " + error.message() : std::string()));
+    createFolder(options.dumpVisibleDir, "folder");
 
     const apps::LoadedScene loaded = loadBenchScene(options);
     if (!options.saveWalkFile.empty())
         loaded.walk.save(options.saveWalkFile);
-    core::Walk walk = subsampledWalk(loaded.walk, options.views);
-    if (options.cube)
-        walk = cubeFaceWalk(walk);
+    const core::Walk walk = benchWalk(loaded.walk, options);
     const std::vector<core::View> views = makeCoreViews(walk);
     // note: the extraction a VisibilityGroup's ViewCuller makes (default options keep the triangles);
     // the bench's shared extraction keeps none, which object-space occluders need.

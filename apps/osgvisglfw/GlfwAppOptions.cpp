@@ -31,13 +31,7 @@ GlfwAppOptions parseOptions(int argc, char** argv)
         .value({"--frames"}, [&](const std::string& v)
                { options.frames = unsigned(apps::parseUnsigned("--frames", v, 1, 1000000000)); })
         .value({"--screenshot"}, options.screenshotPath)
-        .positional(
-            [&](const std::string& v)
-            {
-                if (!options.modelPath.empty())
-                    throw UsageError("more than one model given: '" + options.modelPath + "' and '" + v + "'");
-                options.modelPath = v;
-            });
+        .positional(options.modelPath, "more than one model given:");
     point("--eye", options.eye, eyeGiven);
     point("--center", options.center, centerGiven);
     line.parse(argc, argv);

@@ -195,18 +195,10 @@ int main(int argc, char** argv)
     GlfwAppOptions options;
     try
     {
-        options = parseOptions(argc, argv);
-        if (options.help)
-        {
-            std::cout << usageText(Program);
-            return 0;
-        }
+        if (const std::optional<int> status =
+                osgVis::apps::readCommandLine(options, parseOptions, argc, argv, Program, "", usageText(Program)))
+            return *status;
         return run(options);
-    }
-    catch (const osgVis::apps::UsageError& e)
-    {
-        std::cerr << Program << ": " << e.what() << "\n";
-        return 2;
     }
     catch (const osgVis::core::UnknownModeError& e)
     {

@@ -88,26 +88,20 @@ int main(int argc, char** argv)
     o.bake.threads = 1;
     const char* usage = "usage: [mpirun -np R] osgvispvs-dispatch-bench --units N --unit-ms MS -o OUT.pvs\n";
     bool help = false; // the shared parser's errors point to --help
-    try
-    {
-        apps::CommandLine line;
-        line.flag({"--help", "-h"}, help)
-            .value({"--units"}, [&](const std::string& text)
-                   { units = std::uint32_t(apps::parseUnsigned("--units", text, 0, 4294967295u)); })
-            .value({"--unit-ms"}, [&](const std::string& text) { unitMs = apps::parseNumber("--unit-ms", text); })
-            .value({"-o"}, o.pvsFile);
-        line.parse(argc, argv);
-    }
-    catch (const apps::UsageError& e)
-    {
-        std::cerr << "osgvispvs-dispatch-bench: " << e.what() << '\n' << usage;
-        return 2;
-    }
-    if (help)
-    {
-        std::cout << usage;
-        return 0;
-    }
+    apps::CommandLine line;
+    line.flag({"--help", "-h"}, help)
+        .value({"--units"}, [&](const std::string& text)
+               { units = std::uint32_t(apps::parseUnsigned("--units", text, 0, 4294967295u)); })
+        .value({"--unit-ms"}, [&](const std::string& text) { unitMs = apps::parseNumber("--unit-ms", text); })
+        .value({"-o"}, o.pvsFile);
+    if (const std::optional<int> status = apps::readCommandLine(
+            [&]
+            {
+                line.parse(argc, argv);
+                return help;
+            },
+            "osgvispvs-dispatch-bench", usage, usage))
+        return *status;
     const SyntheticJob job(std::max(units, 1u), unitMs);
     const MpiSession mpi(argc, argv);
 #ifdef OSGVIS_WITH_MPI

@@ -72,20 +72,14 @@ PvsMergeOptions parsePvsMergeOptions(const std::vector<std::string>& arguments)
 int runPvsMerge(const std::vector<std::string>& arguments)
 {
     PvsMergeOptions o;
-    try
-    {
-        o = parsePvsMergeOptions(arguments);
-    }
-    catch (const UsageError& e)
-    {
-        std::cerr << "osgvispvs: " << e.what() << "\n(osgvispvs merge --help for usage)\n";
-        return 2;
-    }
-    if (o.help)
-    {
-        std::cout << pvsMergeUsage();
-        return 0;
-    }
+    if (const std::optional<int> status = apps::readCommandLine(
+            [&]
+            {
+                o = parsePvsMergeOptions(arguments);
+                return o.help;
+            },
+            "osgvispvs", "(osgvispvs merge --help for usage)\n", pvsMergeUsage()))
+        return *status;
     try
     {
         std::vector<core::PvsFile> ranges;

@@ -274,13 +274,7 @@ PvsToolOptions parsePvsToolOptions(int argc, char** argv, const char* (*environm
     addMethodOptions(line, o);
     addViewCellOptions(line, o);
     addSplitOptions(line, o, environment);
-    line.positional(
-        [&o](const std::string& model)
-        {
-            if (!o.modelFile.empty())
-                throw UsageError("one model only: got '" + o.modelFile + "' and '" + model + "'");
-            o.modelFile = model;
-        });
+    line.positional(o.modelFile, "one model only: got");
     line.parse(argc, argv);
     if (o.help || o.version)
         return o;

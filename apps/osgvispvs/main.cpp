@@ -22,20 +22,14 @@ int main(int argc, char** argv)
     if (argc > 1 && std::string(argv[1]) == "merge")
         return runPvsMerge(std::vector<std::string>(argv + 2, argv + argc));
     PvsToolOptions options;
-    try
-    {
-        options = parsePvsToolOptions(argc, argv);
-    }
-    catch (const UsageError& e)
-    {
-        std::cerr << "osgvispvs: " << e.what() << "\n(osgvispvs --help for usage)\n";
-        return 2;
-    }
-    if (options.help)
-    {
-        std::cout << pvsToolUsage();
-        return 0;
-    }
+    if (const std::optional<int> status = osgVis::apps::readCommandLine(
+            [&]
+            {
+                options = parsePvsToolOptions(argc, argv);
+                return options.help;
+            },
+            "osgvispvs", "(osgvispvs --help for usage)\n", pvsToolUsage()))
+        return *status;
     if (options.version)
     {
         std::cout << "osgvispvs (osgVis " << osgVisGetVersion() << ")\n";

@@ -62,13 +62,7 @@ RawOptions parseRawOptions(int argc, char** argv)
         .flag({"--pixels"}, options.pixels)
         .flag({"--show"}, options.show)
         .flag({"--hierarchy"}, options.hierarchy)
-        .positional(
-            [&](const std::string& v)
-            {
-                if (!options.model.empty())
-                    throw UsageError("more than one model: '" + options.model + "' and '" + v + "'");
-                options.model = v;
-            });
+        .positional(options.model, "more than one model:");
     line.parse(argc, argv);
     if (!options.help && options.model.empty())
         throw UsageError("no model given");

@@ -158,19 +158,27 @@ struct RawRenderer::Impl
     GLint modelViewProjection = -1, modelView = -1, color = -1, lit = -1;
     std::vector<Mesh> meshes;
 
+    // A shader's compile or a program's link status (each has its own GL query and log); throws
+    // `failure` followed by the log when it failed.
+    static void checkStatus(GLuint object, GLenum status, PFNGLGETSHADERIVPROC getStatus,
+                            PFNGLGETSHADERINFOLOGPROC getLog, const char* failure)
+    {
+        GLint ok = 0;
+        getStatus(object, status, &ok);
+        if (!ok)
+        {
+            char log[2048] = {0};
+            getLog(object, sizeof log, nullptr, log);
+            throw GlError(failure + std::string(log));
+        }
+    }
+
     GLuint compile(GLenum type, const char* source)
     {
         const GLuint shader = gl.glCreateShader(type);
         gl.glShaderSource(shader, 1, &source, nullptr);
         gl.glCompileShader(shader);
-        GLint ok = 0;
-        gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-        if (!ok)
-        {
-            char log[2048] = {0};
-            gl.glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-            throw GlError(std::string("shader does not compile: ") + log);
-        }
+        checkStatus(shader, GL_COMPILE_STATUS, gl.glGetShaderiv, gl.glGetShaderInfoLog, "shader does not compile: ");
         return shader;
     }
 
@@ -184,14 +192,7 @@ struct RawRenderer::Impl
         gl.glLinkProgram(program);
         gl.glDeleteShader(vertex);
         gl.glDeleteShader(fragment);
-        GLint ok = 0;
-        gl.glGetProgramiv(program, GL_LINK_STATUS, &ok);
-        if (!ok)
-        {
-            char log[2048] = {0};
-            gl.glGetProgramInfoLog(program, sizeof log, nullptr, log);
-            throw GlError(std::string("program does not link: ") + log);
-        }
+        checkStatus(program, GL_LINK_STATUS, gl.glGetProgramiv, gl.glGetProgramInfoLog, "program does not link: ");
         modelViewProjection = gl.glGetUniformLocation(program, "modelViewProjection");
         modelView = gl.glGetUniformLocation(program, "modelView");
         color = gl.glGetUniformLocation(program, "color");

@@ -18,26 +18,15 @@ namespace
 {
 constexpr double HalfPi = 1.57079632679489661923; // as OSG's osg::PI_2
 
-// this = other · this (OSG's Matrixd::preMult), each element a left-to-right sum of four products.
-void preMult(Matrix& self, const Matrix& other)
+// a · b, each element a left-to-right sum of four products as OSG's Matrixd multiplies: its
+// m.preMult(other) is product(other, m), its m.postMult(other) product(m, other).
+Matrix product(const Matrix& a, const Matrix& b)
 {
     Matrix out;
     for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c)
-            out.m[r][c] = other.m[r][0] * self.m[0][c] + other.m[r][1] * self.m[1][c] + other.m[r][2] * self.m[2][c] +
-                          other.m[r][3] * self.m[3][c];
-    self = out;
-}
-
-// this = this · other (OSG's Matrixd::postMult).
-void postMult(Matrix& self, const Matrix& other)
-{
-    Matrix out;
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c)
-            out.m[r][c] = self.m[r][0] * other.m[0][c] + self.m[r][1] * other.m[1][c] + self.m[r][2] * other.m[2][c] +
-                          self.m[r][3] * other.m[3][c];
-    self = out;
+            out.m[r][c] = a.m[r][0] * b.m[0][c] + a.m[r][1] * b.m[1][c] + a.m[r][2] * b.m[2][c] + a.m[r][3] * b.m[3][c];
+    return out;
 }
 
 // The rotation of quaternion (x, y, z, w), normalised on the fly by 2/|q|² (OSG's Matrixd::setRotate);
@@ -77,25 +66,17 @@ Matrix zUp()
     return rotation(1.0 * std::sin(half) * 1.0, 0.0 * std::sin(half) * 1.0, 0.0 * std::sin(half) * 1.0, std::cos(half));
 }
 
+// Throws the shared reader's GltfError for a transform of the wrong size (a SceneError in loadRawScene).
 Matrix nodeMatrix(const tinygltf::Node& node, int index)
 {
-    const std::string where = "node " + std::to_string(index);
+    gltf::checkNodeTransform(node, index);
     Matrix out;
     if (!node.matrix.empty())
     {
-        if (node.matrix.size() != 16)
-            throw SceneError(where + " has a matrix of " + std::to_string(node.matrix.size()) + " values, expected 16");
         for (int i = 0; i < 16; ++i)
             out.m[i / 4][i % 4] = node.matrix[std::size_t(i)]; // glTF's column-major array, as it is
         return out;
     }
-    if (!node.scale.empty() && node.scale.size() != 3)
-        throw SceneError(where + " has a scale of " + std::to_string(node.scale.size()) + " values, expected 3");
-    if (!node.rotation.empty() && node.rotation.size() != 4)
-        throw SceneError(where + " has a rotation of " + std::to_string(node.rotation.size()) + " values, expected 4");
-    if (!node.translation.empty() && node.translation.size() != 3)
-        throw SceneError(where + " has a translation of " + std::to_string(node.translation.size()) +
-                         " values, expected 3");
     if (!node.scale.empty()) // M · S: column c scaled by s[c]
         for (int r = 0; r < 4; ++r)
             for (int c = 0; c < 3; ++c)
@@ -104,7 +85,7 @@ Matrix nodeMatrix(const tinygltf::Node& node, int index)
     {
         const std::vector<double>& q = node.rotation;
         if (!(q[0] == 0.0 && q[1] == 0.0 && q[2] == 0.0 && q[3] == 1.0)) // no rotation: nothing to multiply
-            postMult(out, rotation(q[0], q[1], q[2], q[3]));
+            out = product(out, rotation(q[0], q[1], q[2], q[3]));
     }
     if (!node.translation.empty()) // M · T
         for (int c = 0; c < 3; ++c)
@@ -367,8 +348,8 @@ public:
         check(!_onPath[std::size_t(index)], "node " + std::to_string(index) + " is its own ancestor");
         _onPath[std::size_t(index)] = true;
         const tinygltf::Node& source = _model.nodes[std::size_t(index)];
-        Matrix world = parentWorld;
-        preMult(world, nodeMatrix(source, index)); // OSG's computeLocalToWorld: local · parent
+        // OSG's computeLocalToWorld: local · parent.
+        const Matrix world = product(nodeMatrix(source, index), parentWorld);
         const std::string path = (parentPath.empty() ? "n" : parentPath + "/n") + std::to_string(index);
         const auto instance = std::uint32_t(_out.nodes.size());
         _out.nodes.emplace_back();
@@ -491,8 +472,8 @@ RawScene loadRawScene(const std::string& path)
     RawScene scene;
     try
     {
-        Matrix root; // identity, then the Z-up rotation, as OSG's path from the plugin's root starts
-        preMult(root, zUp());
+        // The identity, then the Z-up rotation, as OSG's path from the plugin's root starts.
+        const Matrix root = product(zUp(), Matrix());
         Flattener flattener(model, scene);
         for (int node : roots)
             scene.rootNodes.push_back(flattener.node(node, root, ""));

@@ -354,20 +354,10 @@ int run(const RawOptions& options)
 int main(int argc, char** argv)
 {
     RawOptions options;
-    try
-    {
-        options = parseRawOptions(argc, argv);
-    }
-    catch (const osgVis::apps::UsageError& e)
-    {
-        std::cerr << "osgvisrawgl: " << e.what() << "\n" << rawUsage();
-        return 2;
-    }
-    if (options.help)
-    {
-        std::cout << rawUsage();
-        return 0;
-    }
+    const std::string usage = rawUsage(); // after a bad command line, too
+    if (const std::optional<int> status =
+            osgVis::apps::readCommandLine(options, parseRawOptions, argc, argv, "osgvisrawgl", usage, usage))
+        return *status;
     try
     {
         return run(options);

@@ -36,13 +36,7 @@ ViewerOptions parseOptions(int argc, char** argv)
                { options.threading = apps::threadingModelName(apps::parseThreadingModel(v)); })
         .value({"--async"},
                [&](const std::string& v) { options.async = apps::parseOnOff("--async", v, false).front(); })
-        .positional(
-            [&](const std::string& v)
-            {
-                if (!options.scenePath.empty())
-                    throw UsageError("more than one scene given: '" + options.scenePath + "' and '" + v + "'");
-                options.scenePath = v;
-            });
+        .positional(options.scenePath, "more than one scene given:");
     try
     {
         line.parse(argc, argv);

@@ -20,23 +20,15 @@ int main(int argc, char** argv)
     osgVis::apps::addOsgVisPluginPaths(); // .pvs and .gltf/.glb load from the build tree and after install
     const std::string program = "osgvisviewer";
     ViewerOptions options;
+    if (const std::optional<int> status =
+            osgVis::apps::readCommandLine(options, parseOptions, argc, argv, program, "", usageText(program)))
+        return *status;
     try
     {
-        options = parseOptions(argc, argv);
-        if (options.help)
-        {
-            std::cout << usageText(program);
-            return 0;
-        }
         // A Quake 3 level brings its own cells: its mode joins the cycle (SceneSource files them).
         if (options.scenePath.size() > 4 && options.scenePath.compare(options.scenePath.size() - 4, 4, ".bsp") == 0)
             osgVis::apps::registerQ3PvsMode();
         checkMode(options.mode);
-    }
-    catch (const osgVis::apps::UsageError& e)
-    {
-        std::cerr << program << ": " << e.what() << "\n";
-        return 2;
     }
     catch (const osgVis::core::UnknownModeError& e)
     {

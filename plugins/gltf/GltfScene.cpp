@@ -4,6 +4,7 @@
 #include "GltfMaterials.h"
 #include "GltfMeshes.h"
 
+#include <osgVis/gltf/GltfAccessors.h>
 #include <osgVis/gltf/GltfError.h>
 
 #include <osg/MatrixTransform>
@@ -21,21 +22,10 @@ namespace
 {
 osg::Matrixd nodeMatrix(const tinygltf::Node& node, int nodeIndex)
 {
-    const std::string where = "node " + std::to_string(nodeIndex);
+    gltf::checkNodeTransform(node, nodeIndex);
+    // note: glTF's column-major array is exactly the memory layout of OSG's row-vector matrix.
     if (!node.matrix.empty())
-    {
-        if (node.matrix.size() != 16)
-            throw GltfError(where + " has a matrix of " + std::to_string(node.matrix.size()) + " values, expected 16");
-        // note: glTF's column-major array is exactly the memory layout of OSG's row-vector matrix.
         return osg::Matrixd(node.matrix.data());
-    }
-    if (!node.scale.empty() && node.scale.size() != 3)
-        throw GltfError(where + " has a scale of " + std::to_string(node.scale.size()) + " values, expected 3");
-    if (!node.rotation.empty() && node.rotation.size() != 4)
-        throw GltfError(where + " has a rotation of " + std::to_string(node.rotation.size()) + " values, expected 4");
-    if (!node.translation.empty() && node.translation.size() != 3)
-        throw GltfError(where + " has a translation of " + std::to_string(node.translation.size()) +
-                        " values, expected 3");
     osg::Matrixd matrix;
     if (!node.scale.empty())
         matrix.postMultScale(osg::Vec3d(node.scale[0], node.scale[1], node.scale[2]));

@@ -80,6 +80,38 @@ TEST(CommandLine, ErrorsNameTheArgument)
     EXPECT_FALSE(line.knows("--frobnicate"));
 }
 
+TEST(CommandLine, OnePositionalIsRefusedTwiceInTheAppsWords)
+{
+    std::string model;
+    CommandLine line;
+    line.positional(model, "more than one model given:");
+    line.parse({"a.osgb"});
+    EXPECT_EQ(model, "a.osgb");
+    EXPECT_EQ(errorOf([&] { line.parse({"b.osgb"}); }), "more than one model given: 'a.osgb' and 'b.osgb'");
+}
+
+TEST(CommandLine, ReadCommandLineSaysAUsageErrorOrTheHelp)
+{
+    const auto read = [](const std::function<bool()>& parse, std::string& out, std::string& err)
+    {
+        testing::internal::CaptureStdout();
+        testing::internal::CaptureStderr();
+        const std::optional<int> status = osgVis::apps::readCommandLine(parse, "app", "(app --help)\n", "usage\n");
+        out = testing::internal::GetCapturedStdout();
+        err = testing::internal::GetCapturedStderr();
+        return status;
+    };
+    std::string out, err;
+    EXPECT_EQ(read([]() -> bool { throw UsageError("--mode expects a value"); }, out, err), 2);
+    EXPECT_EQ(err, "app: --mode expects a value\n(app --help)\n");
+    EXPECT_EQ(out, "");
+    EXPECT_EQ(read([] { return true; }, out, err), 0);
+    EXPECT_EQ(out, "usage\n");
+    EXPECT_EQ(err, "");
+    EXPECT_EQ(read([] { return false; }, out, err), std::nullopt);
+    EXPECT_EQ(out + err, "");
+}
+
 TEST(CommandLine, UnsignedIsDigitsWithinItsRange)
 {
     using osgVis::apps::parseUnsigned;

@@ -41,16 +41,27 @@ TEST(RawGlErrors, BadInputExitsOneWithTheReason)
     EXPECT_NE(broken.output.find("broken.gltf"), std::string::npos) << broken.output;
 
     // A valid model (one triangle) without a walk beside it, then with a malformed walk.
-    std::ofstream(dir / "triangle.gltf")
-        << R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
-           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
-           R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
-           R"("min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
-           R"("buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)"
-           R"(AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
+    // One triangle under one node (`node` its JSON).
+    const auto triangle = [](const std::string& node)
+    {
+        return R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[)" + node +
+               R"(],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+               R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+               R"("min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+               R"("buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)"
+               R"(AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
+    };
+    std::ofstream(dir / "triangle.gltf") << triangle(R"({"mesh":0})");
     const AppRun noWalk = runApp(OSGVIS_RAWGL_EXE, (dir / "triangle.gltf").string());
     EXPECT_EQ(noWalk.exitCode, 1);
     EXPECT_NE(noWalk.output.find("no walk"), std::string::npos) << noWalk.output;
+
+    // A node transform of the wrong size, in the words of the glTF plugin (the check they share).
+    std::ofstream(dir / "scale.gltf") << triangle(R"({"mesh":0,"scale":[1,2]})");
+    const AppRun badScale = runApp(OSGVIS_RAWGL_EXE, (dir / "scale.gltf").string());
+    EXPECT_EQ(badScale.exitCode, 1);
+    EXPECT_NE(badScale.output.find("scale.gltf: node 0 has a scale of 2 values, expected 3"), std::string::npos)
+        << badScale.output;
 
     std::ofstream(dir / "bad.walk") << "osgvis-walk 1\nsize 0 480\n";
     const AppRun badWalk =

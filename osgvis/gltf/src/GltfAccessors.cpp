@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The validated glTF accessor reader shared by the osgdb_gltf plugin and osgvisrawgl.
+// The validated glTF accessor reader (and node transform check) shared by the osgdb_gltf plugin and
+// osgvisrawgl.
 #include <osgVis/gltf/GltfAccessors.h>
 
 #include <osgVis/gltf/GltfError.h>
@@ -218,5 +219,24 @@ std::vector<std::uint32_t> readIndexAccessor(const tinygltf::Model& model, int a
         indices[i] = index;
     }
     return indices;
+}
+
+void checkNodeTransform(const tinygltf::Node& node, int nodeIndex)
+{
+    const std::string where = "node " + std::to_string(nodeIndex);
+    const auto check = [&where](const std::vector<double>& values, const char* what, std::size_t size)
+    {
+        if (!values.empty() && values.size() != size)
+            throw GltfError(where + " has " + what + " of " + std::to_string(values.size()) + " values, expected " +
+                            std::to_string(size));
+    };
+    if (!node.matrix.empty())
+    {
+        check(node.matrix, "a matrix", 16);
+        return; // a matrix stands for the rest, which neither reader reads then
+    }
+    check(node.scale, "a scale", 3);
+    check(node.rotation, "a rotation", 4);
+    check(node.translation, "a translation", 3);
 }
 } // namespace osgVis::gltf

@@ -420,4 +420,9 @@ TEST(GltfPlugin, BrokenReferencesAndRanges)
               "gltf: <stream>: node 0 refers to node 5, but there are 1");
     EXPECT_EQ(readTriangle(goodAccessor, goodView, R"({"mesh":0,"children":[0]})"),
               "gltf: <stream>: node 0 is its own ancestor (a cycle through node 0)");
+    // The node transform check osgvisrawgl shares (osgVis/gltf/GltfAccessors.h).
+    EXPECT_EQ(readTriangle(goodAccessor, goodView, R"({"mesh":0,"matrix":[1,0,0]})"),
+              "gltf: <stream>: node 0 has a matrix of 3 values, expected 16");
+    EXPECT_EQ(readTriangle(goodAccessor, goodView, R"({"mesh":0,"rotation":[0,0,1]})"),
+              "gltf: <stream>: node 0 has a rotation of 3 values, expected 4");
 }

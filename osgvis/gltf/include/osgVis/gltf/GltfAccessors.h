@@ -35,4 +35,8 @@ struct ByteRange
     std::size_t size = 0;
 };
 ByteRange bufferViewBytes(const tinygltf::Model& model, int bufferViewIndex);
+
+// The sizes of node `nodeIndex`'s own transform, checked before either reader composes it: a
+// matrix of 16 values, else (where given) a scale of 3, a rotation of 4 and a translation of 3.
+void checkNodeTransform(const tinygltf::Node& node, int nodeIndex);
 } // namespace osgVis::gltf
