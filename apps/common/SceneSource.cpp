@@ -7,6 +7,8 @@
 
 #include <osgVis/ModelRepair>
 #include <osgVis/VisibilityGroup>
+#include <osgVis/core/cellportal/CellPortalModule.h>
+#include <osgVis/core/multifocal/MultifocalModule.h>
 #include <osgVis/core/pvs/PvsFormat.h>
 #include <osgVis/gen/Generator.h>
 
@@ -106,8 +108,9 @@ std::string walkForPvs(const std::string& pvsPath)
 }
 
 // A .pvs file read through the osgdb_pvs plugin: the model it names, unwrapped from the plugin's
-// cellportal VisibilityGroup so that the caller's own modes wrap it; the baked data stay registered
-// for any cellportal module given this model.
+// cellportal VisibilityGroup so that the caller's own modes wrap it. The group holds the baked
+// data; the apps build many chains of their own (a group per mode, cull-only sweeps, dumps), so
+// they find the data in the process-wide store, where they are put here.
 osg::ref_ptr<osg::Node> readPvsScene(const std::string& path)
 {
     std::error_code error;
@@ -126,6 +129,12 @@ osg::ref_ptr<osg::Node> readPvsScene(const std::string& path)
     if (!group || group->getNumChildren() != 1)
         throw SceneError("cannot read scene '" + path +
                          "': it did not load as a VisibilityGroup holding one model");
+    if (const std::shared_ptr<const core::BakedData> baked = group->getBakedData())
+    {
+        if (auto data = baked->get<core::CellPortalData>())
+            core::registerBakedCellPortalData(std::move(data));
+        core::registerBakedViewCells(baked->get<core::BakedViewCells>());
+    }
     const char* what = group->getModes() == "multifocal" ? "view cells" : "cell-portal data";
     std::cerr << "scene '" << path << "': baked " << what << " " << trustLine(*group) << std::endl;
     return group->getChild(0);

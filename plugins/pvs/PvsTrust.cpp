@@ -64,9 +64,11 @@ std::string mismatchWithModel(const core::PvsFile& pvs, osg::Node& model)
            " objects; this model has " + hex(fingerprint) + ", " + std::to_string(objects) + " objects)";
 }
 
-osg::ref_ptr<VisibilityGroup> makeTrustedGroup(osg::Node& model, const std::string& name, const std::string& modes)
+osg::ref_ptr<VisibilityGroup> makeTrustedGroup(osg::Node& model, const std::string& name,
+                                               std::shared_ptr<const core::BakedData> baked, const std::string& modes)
 {
     osg::ref_ptr<VisibilityGroup> group = new VisibilityGroup(modes);
+    group->setBakedData(std::move(baked));
     group->setName(name);
     group->addDescription(TrustedDescription);
     group->addChild(&model);

@@ -22,7 +22,9 @@ extern const char* const UntrustedPrefix; // followed by the reason
 // where the file has a geometry fingerprint (version 2), else the same fingerprint and object count.
 std::string mismatchWithModel(const core::PvsFile& pvs, osg::Node& model);
 
+// The group holds the .pvs's data (VisibilityGroup::setBakedData), not the process-wide store.
 osg::ref_ptr<VisibilityGroup> makeTrustedGroup(osg::Node& model, const std::string& name,
+                                              std::shared_ptr<const core::BakedData> baked,
                                               const std::string& modes = "cellportal");
 osg::ref_ptr<VisibilityGroup> makeUntrustedGroup(osg::Node& model, const std::string& name, const std::string& reason);
 // True for a group this plugin made (its child is the model a .pvs was read with).

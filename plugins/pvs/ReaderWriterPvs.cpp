@@ -2,10 +2,10 @@
 // osgdb_pvs: the `.pvs` file (docs/pvs-format.md) as an osgDB format.
 //
 // Reading x.pvs gives the model the file names, under an osgVis::VisibilityGroup named "x.pvs":
-// - the .pvs reads and was baked for the model → modes "cellportal", its data registered with
-//   core::registerBakedCellPortalData, description "osgVis:pvs-trusted"; a file of view cells only
-//   (osgvispvs --method multifocal) → modes "multifocal", its cells registered with
-//   core::registerBakedViewCells;
+// - the .pvs reads and was baked for the model → modes "cellportal", its data held by the group
+//   (VisibilityGroup::setBakedData, not a process-wide store: two groups of one model may hold
+//   different bakes, and the data go with the group), description "osgVis:pvs-trusted"; a file of
+//   view cells only (osgvispvs --method multifocal) → modes "multifocal", its cells held likewise;
 // - the .pvs was baked for another model (its geometry fingerprint, or for a version 1 file its
 //   fingerprint, differs) or holds neither kind of data → modes "frustum", a warning, description
 //   "osgVis:pvs-untrusted: <reason>";
@@ -111,6 +111,7 @@ osgDB::ReaderWriter::ReadResult showWithModel(core::PvsFile&& pvs, const std::st
                  << "; showing the model with frustum culling only. Bake it again with osgvispvs." << std::endl;
         return makeUntrustedGroup(*model, name, mismatch);
     }
+    auto baked = std::make_shared<core::BakedData>();
     if (pvs.hasViewCells)
     {
         auto cells = std::make_shared<core::BakedViewCells>();
@@ -118,12 +119,12 @@ osgDB::ReaderWriter::ReadResult showWithModel(core::PvsFile&& pvs, const std::st
         cells->objectCount = pvs.data.objectCount;
         cells->nearDistance = pvs.nearDistance;
         cells->cells = std::move(pvs.viewCells);
-        core::registerBakedViewCells(std::move(cells));
+        baked->set<core::BakedViewCells>(std::move(cells));
     }
     if (!pvs.hasCellPortal)
-        return makeTrustedGroup(*model, name, "multifocal");
-    core::registerBakedCellPortalData(std::make_shared<const core::CellPortalData>(std::move(pvs.data)));
-    return makeTrustedGroup(*model, name);
+        return makeTrustedGroup(*model, name, std::move(baked), "multifocal");
+    baked->set(std::make_shared<const core::CellPortalData>(std::move(pvs.data)));
+    return makeTrustedGroup(*model, name, std::move(baked));
 }
 } // namespace
 

@@ -7,6 +7,8 @@
 
 #include <osgVis/CullVisitor>
 #include <osgVis/VisibilityGroup>
+#include <osgVis/core/multifocal/MultifocalModule.h>
+#include <osgVis/core/scene/SceneFingerprint.h>
 
 #include <osg/FrameStamp>
 #include <osg/Geode>
@@ -151,4 +153,39 @@ TEST(TreeCull, CullVisitorDrawsExactlyTheVisibleDrawablesWithoutCallbacks)
     CallbackCount callbacks;
     root->accept(callbacks);
     EXPECT_TRUE(callbacks.withCallback.empty());
+}
+
+// Baked data set on the group (as the .pvs plugin does) reach every view's chain: view cells whose
+// PVS holds the front box alone leave every other box out, where cells computed on the spot keep
+// the three in view (and, a volume method without the frustum stage, more).
+TEST(TreeCull, BakedDataSetOnTheGroupReachTheViewsChain)
+{
+    osg::ref_ptr<osg::Group> model = content();
+    const osg::ref_ptr<osgVis::ExtractedScene> extracted = osgVis::extractScene(*model);
+    auto cells = std::make_shared<osgVis::core::BakedViewCells>();
+    cells->fingerprint = osgVis::core::sceneFingerprint(extracted->scene);
+    cells->objectCount = std::uint32_t(extracted->scene.objects.size());
+    cells->nearDistance = 10.0;
+    cells->cells.totalCells = 1;
+    cells->cells.cellIndices = {0};
+    cells->cells.cells = {osgVis::core::Aabb(osgVis::core::Vec3(-1.0), osgVis::core::Vec3(1.0))};
+    osgVis::core::VisibleSet pvs(extracted->scene.objects.size());
+    for (osgVis::core::ObjectId id = 0; id < extracted->refs.size(); ++id)
+        if (extracted->refs[id].node()->getName() == "front")
+            pvs.set(id);
+    ASSERT_EQ(pvs.count(), 1u);
+    cells->cells.pvs = {pvs};
+
+    osg::ref_ptr<osgVis::VisibilityGroup> computed = new osgVis::VisibilityGroup("multifocal");
+    computed->addChild(model);
+    const std::set<std::string> kept = names(cullOnce(computed.get(), nullptr));
+    for (const std::string& name : InView)
+        EXPECT_EQ(kept.count(name), 1u) << name;
+
+    osg::ref_ptr<osgVis::VisibilityGroup> baked = new osgVis::VisibilityGroup("multifocal");
+    auto data = std::make_shared<osgVis::core::BakedData>();
+    data->set<osgVis::core::BakedViewCells>(cells);
+    baked->setBakedData(data);
+    baked->addChild(model);
+    EXPECT_EQ(names(cullOnce(baked.get(), nullptr)), std::set<std::string>{"front"});
 }

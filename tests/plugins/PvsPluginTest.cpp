@@ -163,11 +163,13 @@ TEST_F(PvsPlugin, WrittenPvsReadsAsTrustedCellPortalGroup)
     EXPECT_EQ(group->getName(), "x.pvs");
     ASSERT_EQ(group->getNumChildren(), 1u);
 
-    // The data are registered under the fingerprint of the model as read.
+    // The group holds the data, baked for the model as read.
     const auto extracted = osgVis::extractScene(*group->getChild(0));
     EXPECT_EQ(osgVis::core::sceneFingerprint(extracted->scene), pvs.data.fingerprint);
-    const auto registered = osgVis::core::findBakedCellPortalData(pvs.data.fingerprint);
+    ASSERT_TRUE(group->getBakedData());
+    const auto registered = group->getBakedData()->get<osgVis::core::CellPortalData>();
     ASSERT_TRUE(registered);
+    EXPECT_FALSE(group->getBakedData()->get<osgVis::core::BakedViewCells>());
     EXPECT_EQ(registered->graph.cells.size(), pvs.data.graph.cells.size());
     EXPECT_EQ(registered->objectCount, extracted->scene.objects.size());
 }
@@ -243,7 +245,7 @@ TEST_F(PvsPlugin, Version1FileIsCheckedByItsFingerprint)
     readUntrusted(path("x.pvs"), "baked for another model (fingerprint 0x");
 }
 
-TEST_F(PvsPlugin, ViewCellsAloneShowTheModelUnderMultifocalWithTheCellsRegistered)
+TEST_F(PvsPlugin, ViewCellsAloneShowTheModelUnderMultifocalWithTheCellsHeldByTheGroup)
 {
     writeOffice();
     osgVis::core::PvsFile pvs = osgVis::core::readPvsFile(path("x.pvs"));
@@ -262,8 +264,10 @@ TEST_F(PvsPlugin, ViewCellsAloneShowTheModelUnderMultifocalWithTheCellsRegistere
     ASSERT_TRUE(group.valid());
     EXPECT_EQ(group->getModes(), "multifocal");
     EXPECT_EQ(description(*group), "osgVis:pvs-trusted");
-    const auto cells = osgVis::core::findBakedViewCells(pvs.data.fingerprint);
+    ASSERT_TRUE(group->getBakedData());
+    const auto cells = group->getBakedData()->get<osgVis::core::BakedViewCells>();
     ASSERT_TRUE(cells);
+    EXPECT_EQ(cells->fingerprint, pvs.data.fingerprint);
     EXPECT_EQ(cells->objectCount, pvs.data.objectCount);
     EXPECT_EQ(cells->nearDistance, 0.25);
     ASSERT_EQ(cells->cells.cells.size(), 1u);
@@ -413,7 +417,7 @@ TEST_F(PvsPlugin, PvsBakedWithoutClustersIsReportedAsSuchWhenClustersSplitTheMod
 }
 
 // A bake of a whole paged database (osgvispvs reads every tile): the plugin checks the root file's
-// own objects, registers the data by them, and leaves the tiles to the pager.
+// own objects, hands the data to the group, and leaves the tiles to the pager.
 TEST_F(PvsPlugin, PagedDatabaseBakeReadsAsTrustedOverTheRootAlone)
 {
     const osgVis::gen::PagedSummary paged = osgVis::test::writePagedOffice(_dir.string());
@@ -434,8 +438,10 @@ TEST_F(PvsPlugin, PagedDatabaseBakeReadsAsTrustedOverTheRootAlone)
     const auto root = osgVis::extractScene(*group->getChild(0));
     ASSERT_TRUE(root->scene.tiles);
     EXPECT_TRUE(root->scene.tiles->files.empty()); // nothing paged in yet
-    const auto registered = osgVis::core::findBakedCellPortalDataOfDatabase(root->scene.tiles->rootFingerprint);
-    ASSERT_TRUE(registered);
+    ASSERT_TRUE(group->getBakedData());
+    const auto registered = group->getBakedData()->get<osgVis::core::CellPortalData>();
+    ASSERT_TRUE(registered && registered->tiles);
+    EXPECT_EQ(registered->tiles->rootFingerprint, root->scene.tiles->rootFingerprint);
     EXPECT_EQ(registered->objectCount, file.data.objectCount);
 
     // Another root (one tile fewer) is another database.

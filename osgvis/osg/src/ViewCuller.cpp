@@ -112,6 +112,19 @@ void ViewCuller::setModes(const std::string& modes)
     _views.clear();
 }
 
+void ViewCuller::setBakedData(std::shared_ptr<const core::BakedData> baked)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    _baked = std::move(baked);
+    _views.clear();
+}
+
+std::shared_ptr<const core::BakedData> ViewCuller::getBakedData() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _baked;
+}
+
 void ViewCuller::setAsync(bool on, const core::AsyncOptions& options)
 {
     std::lock_guard<std::mutex> lock(_mutex);
@@ -189,6 +202,7 @@ std::shared_ptr<ViewCuller::PerView> ViewCuller::viewFor(const osg::Referenced* 
     {
         core::SessionOptions options;
         options.modes = _modes;
+        options.baked = _baked;
         options.async = _async;
         options.asyncOptions = _asyncOptions;
         options.backOff = _backOffOptions;

@@ -7,6 +7,7 @@
 #include "RayCastVisibility.h"
 #include "RegionSampling.h"
 
+#include <osgVis/core/module/ModuleChain.h>
 #include <osgVis/core/multifocal/MultifocalModule.h>
 #include <osgVis/core/occluders/OccluderBuilder.h>
 #include <osgVis/core/scene/SceneFingerprint.h>
@@ -175,26 +176,34 @@ TEST(VolumeVisibility, AdversarialOccludersKeepEverythingTheRaysSee)
     EXPECT_EQ(missedFromRegion(rays, scene, aside, volumeAnswer(scene, aside, volumeOccluders(scene)), 16), "");
 }
 
-TEST(MultifocalModule, ARegionInsideBakedCellsTakesTheUnionOfTheirPvs)
+// Two baked view cells of `scene` along the city's street, their PVS objects first..first+9 for
+// each first in `firsts`: sets no computation would give.
+std::shared_ptr<BakedViewCells> twoBakedCells(const Scene& scene, std::uint64_t fingerprint,
+                                              std::initializer_list<std::uint32_t> firsts)
 {
-    City city = makeCity();
-    addBox(city.scene, {500, 500, 0}, {501, 501, 1}, "far away"); // a model of its own in the store of bakes
-    const std::vector<Aabb> cells{Aabb(Vec3(84, 4, 0.7), Vec3(88, 8, 2.7)), Aabb(Vec3(84, 8, 0.7), Vec3(88, 12, 2.7))};
     auto baked = std::make_shared<BakedViewCells>();
-    baked->fingerprint = sceneFingerprint(city.scene) ^ 1; // registered under another model first
-    baked->objectCount = std::uint32_t(city.scene.objects.size());
+    baked->fingerprint = fingerprint;
+    baked->objectCount = std::uint32_t(scene.objects.size());
     baked->nearDistance = 1.0;
     baked->cells.totalCells = 2;
     baked->cells.cellIndices = {0, 1};
-    baked->cells.cells = cells;
-    // Cell PVS of objects 0..9 and 5..14: a union no computation would give.
-    for (std::uint32_t first : {0u, 5u})
+    baked->cells.cells = {Aabb(Vec3(84, 4, 0.7), Vec3(88, 8, 2.7)), Aabb(Vec3(84, 8, 0.7), Vec3(88, 12, 2.7))};
+    for (std::uint32_t first : firsts)
     {
-        VisibleSet pvs(city.scene.objects.size());
+        VisibleSet pvs(scene.objects.size());
         for (ObjectId id = first; id < first + 10; ++id)
             pvs.set(id);
         baked->cells.pvs.push_back(pvs);
     }
+    return baked;
+}
+
+TEST(MultifocalModule, ARegionInsideBakedCellsTakesTheUnionOfTheirPvs)
+{
+    City city = makeCity();
+    addBox(city.scene, {500, 500, 0}, {501, 501, 1}, "far away"); // a model of its own in the store of bakes
+    // Cell PVS of objects 0..9 and 5..14, registered under another model first.
+    auto baked = twoBakedCells(city.scene, sceneFingerprint(city.scene) ^ 1, {0u, 5u});
     registerBakedViewCells(baked);
     MultifocalModule other;
     other.setScene(city.scene);
@@ -221,4 +230,35 @@ TEST(MultifocalModule, ARegionInsideBakedCellsTakesTheUnionOfTheirPvs)
     VisibleSet view(city.scene.objects.size(), true);
     module.cull(lookFrom({86, 6, 1.7}, {0, 1, 0}, {0, 0, 1}), view);
     EXPECT_EQ(view, mine->cells.pvs[0]);
+}
+
+// Cells handed to the chain by whoever holds the model (a group read from a .pvs) win over the
+// process-wide store's cells of the same model; cells of another model are not used.
+TEST(MultifocalModule, BakedCellsHandedToTheChainWinOverTheStore)
+{
+    City city = makeCity();
+    addBox(city.scene, {600, 600, 0}, {601, 601, 1}, "elsewhere"); // a model of this test's own
+    const std::uint64_t fingerprint = sceneFingerprint(city.scene);
+    registerBakedViewCells(twoBakedCells(city.scene, fingerprint, {0u, 5u}));
+    const std::shared_ptr<const BakedViewCells> handed = twoBakedCells(city.scene, fingerprint, {20u, 30u});
+
+    auto given = std::make_shared<BakedData>();
+    given->set(handed);
+    ModuleChain chain;
+    chain.add(std::make_unique<MultifocalModule>());
+    chain.setBakedData(given);
+    chain.setScene(city.scene);
+    const auto& module = static_cast<const MultifocalModule&>(chain.module(0));
+    EXPECT_EQ(module.bakedCells(), handed);
+    VisibleSet view(city.scene.objects.size(), true);
+    chain.module(0).cull(lookFrom({86, 6, 1.7}, {0, 1, 0}, {0, 0, 1}), view);
+    EXPECT_EQ(view, handed->cells.pvs[0]);
+
+    // Another model's cells handed over: the store's, baked for this one, are used.
+    auto other = std::make_shared<BakedData>();
+    other->set<BakedViewCells>(twoBakedCells(city.scene, fingerprint ^ 1, {20u, 30u}));
+    chain.setBakedData(other);
+    chain.setScene(city.scene);
+    ASSERT_TRUE(module.bakedCells());
+    EXPECT_EQ(module.bakedCells()->cells.pvs[0], findBakedViewCells(fingerprint)->cells.pvs[0]);
 }

@@ -19,9 +19,11 @@ constexpr double MaxPathFraction = 0.05;
 constexpr std::size_t KeptAnswers = 2;
 } // namespace
 
-AsyncVisibility::AsyncVisibility(const std::string& modes, const AsyncOptions& options)
+AsyncVisibility::AsyncVisibility(const std::string& modes, const AsyncOptions& options,
+                                 std::shared_ptr<const BakedData> baked)
     : _options(options), _chain(createChain(modes))
 {
+    _chain.setBakedData(std::move(baked));
     _supported = _chain.supportsRegions();
     if (_options.lookAheadFrames == 0)
         _options.lookAheadFrames = 1;

@@ -8,9 +8,19 @@ namespace osgVis::core
 {
 void ModuleChain::add(std::unique_ptr<VisibilityModule> module)
 {
+    if (_baked)
+        module->setBakedData(*_baked);
     if (_scene)
         module->setScene(*_scene);
     _modules.push_back(std::move(module));
+}
+
+void ModuleChain::setBakedData(std::shared_ptr<const BakedData> baked)
+{
+    _baked = std::move(baked);
+    const BakedData none;
+    for (const auto& module : _modules)
+        module->setBakedData(_baked ? *_baked : none);
 }
 
 std::string ModuleChain::name() const

@@ -47,6 +47,7 @@ struct MultifocalModule::Impl
     std::list<CellKey> recent; ///< most recent first
     std::map<CellKey, std::pair<CellAnswer, std::list<CellKey>::iterator>> cells;
     std::size_t computed = 0;
+    std::shared_ptr<const BakedViewCells> given; ///< by whoever holds the model (setBakedData)
     std::shared_ptr<const BakedViewCells> baked;
     std::size_t outsideBaked = 0;
 };
@@ -58,11 +59,19 @@ MultifocalModule::MultifocalModule(const MultifocalModuleOptions& options) : _im
 
 MultifocalModule::~MultifocalModule() = default;
 
+void MultifocalModule::setBakedData(const BakedData& baked)
+{
+    _impl->given = baked.get<BakedViewCells>();
+}
+
 void MultifocalModule::setScene(const Scene& scene)
 {
     _scene = &scene;
     _impl->occluders = volumeOccluders(scene);
-    _impl->baked = findBakedViewCells(sceneFingerprint(scene));
+    const std::uint64_t fingerprint = sceneFingerprint(scene);
+    const auto fits = [&](const std::shared_ptr<const BakedViewCells>& cells)
+    { return cells && cells->fingerprint == fingerprint && cells->objectCount == scene.objects.size(); };
+    _impl->baked = fits(_impl->given) ? _impl->given : findBakedViewCells(fingerprint);
     if (_impl->baked && _impl->baked->objectCount != scene.objects.size())
         _impl->baked.reset();
     _impl->outsideBaked = 0;

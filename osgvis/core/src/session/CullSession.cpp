@@ -8,8 +8,9 @@ namespace osgVis::core
 CullSession::CullSession(const SessionOptions& options)
     : _chain(createChain(options.modes)), _backOff(options.backOff)
 {
+    _chain.setBakedData(options.baked);
     if (options.async && _chain.supportsRegions())
-        _async = std::make_unique<AsyncVisibility>(options.modes, options.asyncOptions);
+        _async = std::make_unique<AsyncVisibility>(options.modes, options.asyncOptions, options.baked);
 }
 
 CullSession::~CullSession()

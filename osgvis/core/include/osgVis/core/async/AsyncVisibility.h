@@ -52,8 +52,10 @@ struct AsyncStatistics
 class AsyncVisibility
 {
 public:
-    /// `modes` as createChain takes them (throws UnknownModeError). Starts the worker thread.
-    explicit AsyncVisibility(const std::string& modes, const AsyncOptions& options = {});
+    /// `modes` as createChain takes them (throws UnknownModeError), given the model's `baked` data
+    /// (ModuleChain::setBakedData). Starts the worker thread.
+    explicit AsyncVisibility(const std::string& modes, const AsyncOptions& options = {},
+                             std::shared_ptr<const BakedData> baked = nullptr);
     /// Stops the worker, after the region or scene update it is busy with.
     ~AsyncVisibility();
     AsyncVisibility(const AsyncVisibility&) = delete;

@@ -43,6 +43,8 @@ public:
     /// Use these data for the next setScene instead of looking them up (they must be baked for that
     /// scene: a fingerprint mismatch makes the module bake afresh).
     void setBakedData(std::shared_ptr<const CellPortalData> data);
+    /// The CellPortalData among the model's baked data (none: look them up again).
+    void setBakedData(const BakedData& baked) override { setBakedData(baked.get<CellPortalData>()); }
     std::shared_ptr<const CellPortalData> bakedData() const;
     /// True when the last setScene baked on the spot (no registered data matched the scene).
     bool bakedOnTheSpot() const;

@@ -29,6 +29,8 @@ public:
     std::string name() const;
     bool approximate() const;
 
+    /// Hands every stage (and every stage added later) the model's baked data; before setScene.
+    void setBakedData(std::shared_ptr<const BakedData> baked);
     void setScene(const Scene& scene);
     /// Forwards to every stage; also remembers Removed objects (never reported again until an
     /// Inserted change names them).
@@ -59,6 +61,7 @@ private:
     template <class Refine> void runStages(VisibleSet& visible, const Frustum* frustum, Refine refine);
     void rememberRemoved(const SceneChange& change);
     std::vector<std::unique_ptr<VisibilityModule>> _modules;
+    std::shared_ptr<const BakedData> _baked;
     std::vector<StageTiming> _timings;
     const Scene* _scene = nullptr;
     std::vector<bool> _removed; ///< per object: reported Removed and not re-inserted since

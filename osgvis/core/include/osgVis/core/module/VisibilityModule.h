@@ -3,6 +3,7 @@
 /// @file
 /// The visibility API between a renderer and a visibility algorithm: a scene description the module
 /// keeps between frames, a view in, a visible set out, notification when the scene changes.
+#include <osgVis/core/module/BakedData.h>
 #include <osgVis/core/scene/DebugRecord.h>
 #include <osgVis/core/scene/View.h>
 #include <osgVis/core/scene/ViewRegion.h>
@@ -36,6 +37,10 @@ public:
     /// an oracle): ModuleChain then adds no OBJECT_SLIVERS object back.
     virtual bool judgesSlivers() const { return false; }
 
+    /// Data baked for the model, from whoever holds it (a VisibilityGroup read from a .pvs): the
+    /// module keeps the kinds it knows and uses them from the next setScene, when they fit the scene.
+    /// The default takes none.
+    virtual void setBakedData(const BakedData& baked) { (void)baked; }
     /// Build phase: may allocate and take long. The scene outlives the module or the next setScene.
     virtual void setScene(const Scene& scene) = 0;
     /// The scene (same object as given to setScene) changed; the default rebuilds.

@@ -61,6 +61,9 @@ public:
     ~MultifocalModule() override;
     const char* name() const override { return "multifocal"; }
 
+    /// The BakedViewCells among the model's baked data: used instead of the process-wide store's
+    /// when they were baked for the scene.
+    void setBakedData(const BakedData& baked) override;
     void setScene(const Scene& scene) override;
     void cull(const View& view, VisibleSet& visible) override;
     bool supportsRegions() const override { return true; }

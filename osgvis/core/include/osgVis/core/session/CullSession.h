@@ -24,6 +24,8 @@ namespace osgVis::core
 struct SessionOptions
 {
     std::string modes = "frustum"; ///< as createChain takes them
+    /// Data baked for the model, handed to the chain and the worker's (ModuleChain::setBakedData).
+    std::shared_ptr<const BakedData> baked;
     /// Asynchronous visibility (AsyncVisibility), used when the chain answers regions.
     bool async = false;
     AsyncOptions asyncOptions;
