@@ -6,6 +6,7 @@
 #include "SceneWatch.h"
 
 #include <osgVis/core/api/ModuleRegistry.h>
+#include <osgVis/core/api/ModuleSettings.h>
 #include <osgVis/core/scene/View.h>
 
 #include <osg/Camera>
@@ -110,6 +111,16 @@ void ViewCuller::setModes(const std::string& modes)
     std::lock_guard<std::mutex> lock(_mutex);
     _modes = modes;
     _views.clear();
+}
+
+void ViewCuller::setChain(const std::vector<core::StageSettings>& chain)
+{
+    setModes(core::formatChainSettings(chain));
+}
+
+std::vector<core::StageSettings> ViewCuller::getChain() const
+{
+    return core::parseChainSettings(getModes());
 }
 
 void ViewCuller::setBakedData(std::shared_ptr<const core::BakedData> baked)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/VisibilityGroup>
 
+#include <osgVis/core/api/ModuleSettings.h>
+
 #include "CullingContext.h"
 #include "PagedNodeCulling.h"
 #include "TreeCull.h"
@@ -13,7 +15,8 @@ VisibilityGroup::VisibilityGroup() : _culler(new ViewCuller) {}
 
 VisibilityGroup::VisibilityGroup(const std::string& modes) : _culler(new ViewCuller(modes)) {}
 
-// note: a copy gets its own culler (its own extraction and per-view state), with the same modes and async.
+// note: a copy gets its own culler (its own extraction and per-view state), with the same modes,
+// async, options and baked data (shared: they are immutable).
 VisibilityGroup::VisibilityGroup(const VisibilityGroup& other, const osg::CopyOp& copyop)
     : osg::Group(other, copyop), _culler(new ViewCuller(other.getModes()))
 {
@@ -21,6 +24,17 @@ VisibilityGroup::VisibilityGroup(const VisibilityGroup& other, const osg::CopyOp
     _culler->setBackOff(other.getBackOffOptions());
     _culler->setExtractionOptions(other.getExtractionOptions());
     _culler->setPagingOptions(other.getPagingOptions());
+    _culler->setBakedData(other.getBakedData());
+}
+
+void VisibilityGroup::setChain(const std::vector<core::StageSettings>& chain)
+{
+    _culler->setChain(chain);
+}
+
+std::vector<core::StageSettings> VisibilityGroup::getChain() const
+{
+    return _culler->getChain();
 }
 
 VisibilityGroup::~VisibilityGroup() = default;

@@ -9,6 +9,7 @@
 
 #include <osgVis/Occluder>
 #include <osgVis/VisibilityGroup>
+#include <osgVis/core/api/ModuleSettings.h>
 
 #include <osgDB/ReadFile>
 #include <osgDB/WriteFile>
@@ -78,6 +79,27 @@ TEST_P(SerializerRoundTrip, AsyncAndExtractionOptionsSurvive)
     EXPECT_EQ(async.lookAheadFrames, 7u);
     EXPECT_EQ(async.slack, 0.25);
     EXPECT_FALSE(loaded->getExtractionOptions().keepTriangles);
+}
+
+// Typed module settings travel in the Modes text and come back as the same settings.
+TEST_P(SerializerRoundTrip, ModuleSettingsSurvive)
+{
+    const osg::ref_ptr<VisibilityGroup> original = osgVis::test::makeRoundTripScene();
+    osgVis::core::ChainSettings chain = osgVis::core::parseChainSettings("frustum+octree-paper+mask-approx");
+    std::get<osgVis::core::OctreeOptions>(chain[1].options).occluders = 64;
+    std::get<osgVis::core::MaskOptions>(chain[2].options).shrinkPixels = 2.5;
+    original->setChain(chain);
+    EXPECT_EQ(original->getModes(), "frustum+octree-paper:occluders=64+mask-approx:shrinkPixels=2.5");
+
+    const osg::ref_ptr<VisibilityGroup> loaded =
+        asGroup(osgVis::test::readFromString(osgVis::test::writeToString(*original, GetParam()), GetParam()));
+    ASSERT_NE(loaded, nullptr);
+    EXPECT_EQ(loaded->getModes(), original->getModes());
+    const osgVis::core::ChainSettings read = loaded->getChain();
+    ASSERT_EQ(read.size(), 3u);
+    EXPECT_EQ(std::get<osgVis::core::OctreeOptions>(read[1].options).occluders, 64u);
+    EXPECT_FALSE(std::get<osgVis::core::OctreeOptions>(read[1].options).fuseDisjoint);
+    EXPECT_EQ(std::get<osgVis::core::MaskOptions>(read[2].options).shrinkPixels, 2.5);
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, SerializerRoundTrip,

@@ -1,12 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <osgVis/core/api/ModuleRegistry.h>
 
-#include <osgVis/core/cdt/CdtModule.h>
-#include <osgVis/core/cellportal/CellPortalModule.h>
-#include <osgVis/core/frustum/FrustumModule.h>
-#include <osgVis/core/mask/MaskModule.h>
-#include <osgVis/core/multifocal/MultifocalModule.h>
-#include <osgVis/core/octree/OctreeModule.h>
+#include <osgVis/core/api/ModuleSettings.h>
 #include <osgVis/core/plugin/CallbackModule.h>
 #include <osgVis/core/plugin/PluginModules.h>
 
@@ -20,60 +15,11 @@ namespace
 {
 struct Registry
 {
+    // The built-in names and shorthands, each made from its settings (ModuleSettings).
     Registry()
     {
-        factories["frustum"] = [] { return std::make_unique<FrustumModule>(); };
-        factories["octree"] = [] { return std::make_unique<OctreeModule>(); };
-        factories["octree-single"] = []
-        {
-            OctreeOptions single;
-            single.fuseConnected = false;
-            single.fuseDisjoint = false;
-            return std::make_unique<OctreeModule>(single);
-        };
-        factories["octree-paper"] = []
-        {
-            OctreeOptions paper;
-            paper.fuseDisjoint = false;
-            return std::make_unique<OctreeModule>(paper);
-        };
-        const std::pair<const char*, CellPortalStage> cellPortalStages[] = {
-            {"cellportal", CellPortalStage::EyeToObject},
-            {"cellportal-cells", CellPortalStage::CellToCell},
-            {"cellportal-pvs", CellPortalStage::CellToObject},
-            {"cellportal-eyecells", CellPortalStage::EyeToCell},
-        };
-        for (const auto& [name, stage] : cellPortalStages)
-            factories[name] = [stage = stage] { return std::make_unique<CellPortalModule>(stage); };
-        factories["mask"] = [] { return std::make_unique<MaskModule>(); };
-        factories["mask-approx"] = []
-        {
-            MaskOptions approx;
-            approx.shrink = MaskShrink::FusedUnion;
-            approx.shrinkPixels = 4.0; // the paper's variant at the shrinkage its figures use
-            return std::make_unique<MaskModule>(approx);
-        };
-        factories["multifocal"] = [] { return std::make_unique<MultifocalModule>(); };
-        for (const auto& [name, rule] : {std::pair{"cdt", CdtOptions::Rule::Combined},
-                                          std::pair{"cdt-depthfree", CdtOptions::Rule::DepthFree},
-                                          std::pair{"cdt-depth", CdtOptions::Rule::DepthOnly}})
-        {
-            CdtOptions options;
-            options.rule = rule;
-            factories[name] = [options]() mutable {
-                // Like OSG's own OSG_* variables: a knob for measuring, e.g. the efficacy against
-                // the constraint budget, without rebuilding (docs/cdt.md).
-                if (const char* budget = std::getenv("OSGVIS_CDT_CONSTRAINT_BUDGET"))
-                    options.constraintBudget = std::uint32_t(std::strtoul(budget, nullptr, 10));
-                return std::make_unique<CdtModule>(options);
-            };
-        }
-        factories["mask-distance"] = []
-        {
-            MaskOptions distance;
-            distance.measure = OccluderMeasure::Distance;
-            return std::make_unique<MaskModule>(distance);
-        };
+        for (const StageSettings& stage : builtInStages())
+            factories[stage.name] = [stage] { return createModule(stage); };
     }
 
     std::mutex mutex;
@@ -171,7 +117,8 @@ ModuleChain createChain(const std::string& names)
             trimmed(names.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
         if (name.empty())
             throw UnknownModeError("empty mode name in '" + names + "' (known: " + joined(moduleNames()) + ")");
-        chain.add(createModule(name));
+        // "octree:occluders=64": a built-in module with settings (ModuleSettings.h).
+        chain.add(name.find(':') == std::string::npos ? createModule(name) : createModule(parseStageSettings(name)));
         if (comma == std::string::npos)
             break;
         start = comma + 1;

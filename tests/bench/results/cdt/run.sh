@@ -13,8 +13,8 @@ for scene in tetra office city; do
         > "$out/$scene-500k.txt"
 done
 for budget in 512 2048 8192 32768 0; do
-    OSGVIS_CDT_CONSTRAINT_BUDGET=$budget bash scripts/with-display.sh "$bench" --generate tetra --triangles 500000 \
-        --views 60 --modes osg,cdt --json "$out/tetra-500k-budget-$budget.json" > "$out/tetra-500k-budget-$budget.txt"
+    bash scripts/with-display.sh "$bench" --generate tetra --triangles 500000 \
+        --views 60 --modes "osg,cdt:constraintBudget=$budget" --json "$out/tetra-500k-budget-$budget.json" > "$out/tetra-500k-budget-$budget.txt"
 done
 # The cull walking a renderer's hierarchy beside the module's own kd-tree (issue 24, ordered
 # traversal by callback): the test city, 30 street views, repetitions interleaved.

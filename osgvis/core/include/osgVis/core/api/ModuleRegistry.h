@@ -36,6 +36,7 @@ void registerModule(const std::string& name, ModuleFactory factory);
 /// known modules and the folders searched, or ModuleLoadError when a plugin was found but failed.
 std::unique_ptr<VisibilityModule> createModule(const std::string& name);
 /// Module names joined by '+' or ',' → chain, e.g. "frustum+octree" (the apps' spelling, since their
-/// --modes lists are comma-separated) or "frustum,octree". Throws UnknownModeError.
+/// --modes lists are comma-separated) or "frustum,octree"; a built-in name may carry settings,
+/// "octree:occluders=64" (ModuleSettings.h). Throws UnknownModeError.
 ModuleChain createChain(const std::string& names);
 } // namespace osgVis::core
