@@ -7,7 +7,7 @@
 #include <osgVis/core/occluders/OccluderBuilder.h>
 
 #include <osgVis/core/spatial/DisjointCellTree.h>
-#include <osgVis/core/spatial/HierarchyIndex.h>
+#include <osgVis/core/spatial/SceneHierarchyChoice.h>
 
 #include "ScreenGrid.h"
 
@@ -48,9 +48,9 @@ struct CdtModule::Impl
 {
     DisjointCellTree ownTree;
     const TraversalHierarchy* hierarchy = nullptr; ///< ownTree or the scene's
-    std::shared_ptr<const TraversalHierarchy> sceneHierarchy; ///< kept alive while walked
-    HierarchyIndex index;
-    std::string hierarchyProblem;
+    /// The renderer's hierarchy when taken; its index records whichever of the two is walked. The
+    /// walk keeps front-to-back order: cover drawn in an earlier region hides later ones.
+    SceneHierarchyChoice sceneHierarchy{true};
     std::vector<OccluderPolygon> polygons;
     std::vector<Aabb> polygonBounds;
     /// Per polygon, per edge: the polygons with exactly that edge (same end points, opposite
@@ -109,24 +109,13 @@ void CdtModule::setScene(const Scene& scene)
         present[object.id] = !(object.flags & OBJECT_ALWAYS_VISIBLE);
     }
     // The renderer's hierarchy when it passes the checks, else a kd-tree of our own.
-    m.hierarchy = nullptr;
-    m.sceneHierarchy.reset();
-    m.hierarchyProblem.clear();
-    if (_options.sceneHierarchy && scene.hierarchy)
-    {
-        m.index.build(*scene.hierarchy, scene);
-        if (m.index.usable())
-        {
-            m.sceneHierarchy = scene.hierarchy;
-            m.hierarchy = scene.hierarchy.get();
-        }
-        m.hierarchyProblem = m.index.problem();
-    }
+    m.sceneHierarchy.choose(scene, _options.sceneHierarchy);
+    m.hierarchy = m.sceneHierarchy.hierarchy();
     m.ownTree = {};
     if (!m.hierarchy)
     {
         m.ownTree.build(bounds, present, _options.maxLeafObjects);
-        m.index.build(m.ownTree, scene);
+        m.sceneHierarchy.indexOwnTree(m.ownTree, scene);
         m.hierarchy = &m.ownTree;
     }
 
@@ -203,8 +192,8 @@ struct CdtModule::Impl::Frame final : HierarchyVisitor
         : m(module), options(cullOptions), debug(debugRecord), scene(frameScene), view(frameView),
           visible(frameVisible), margin(module.grid.depthMargin()),
           depthOnly(cullOptions.rule == CdtOptions::Rule::DepthOnly ||
-                    module.index.layout() == HierarchyLayout::Overlapping),
-          walk(module.index, frameView.eye)
+                    module.sceneHierarchy.index().layout() == HierarchyLayout::Overlapping),
+          index(module.sceneHierarchy.index()), walk(module.sceneHierarchy.walk(frameView.eye))
     {
     }
 
@@ -217,7 +206,10 @@ struct CdtModule::Impl::Frame final : HierarchyVisitor
     const double margin;
     // Over overlapping nodes front to back orders nothing along rays: depth is all that separates.
     const bool depthOnly;
-    HierarchyIndex::Walk walk;
+    // The index of the hierarchy walked (the renderer's or ownTree) and the module's walk over it,
+    // whose buffers last from frame to frame.
+    const HierarchyIndex& index;
+    HierarchyIndex::Walk& walk;
     bool stopped = false; // the test budget ran out, or the traversal strayed: nothing more is culled
     // Per depth of the walk: the node entered there and its objects by distance (an inner node's
     // list must outlive its children's).
@@ -395,7 +387,7 @@ void CdtModule::Impl::Frame::drawObject(ObjectId id, const Aabb* cell)
 void CdtModule::Impl::Frame::cullSubtree(const HierarchyIndex::Node& n)
 {
     for (std::uint32_t i = n.firstObject; i < n.subtreeEnd; ++i)
-        visible.clear(m.index.objects()[i]);
+        visible.clear(index.objects()[i]);
 }
 
 bool CdtModule::Impl::Frame::enter(const HierarchyNode& node)
@@ -478,7 +470,7 @@ std::vector<std::pair<double, ObjectId>>& CdtModule::Impl::Frame::heldObjectsByD
     order.clear();
     for (std::uint32_t i = n.firstObject; i < n.firstObject + n.heldCount; ++i)
     {
-        const ObjectId id = m.index.objects()[i];
+        const ObjectId id = index.objects()[i];
         if (!visible.test(id))
             continue;
         const Aabb& b = scene.objects[id].bounds;
@@ -538,7 +530,8 @@ void CdtModule::cull(const View& view, VisibleSet& visible)
     Impl& m = *_impl;
     const auto start = std::chrono::steady_clock::now();
     m.stats = {};
-    if (!_scene || !m.hierarchy || m.index.objects().empty() || !m.grid.set(view, _options.tolerancePixels))
+    if (!_scene || !m.hierarchy || m.sceneHierarchy.index().objects().empty() ||
+        !m.grid.set(view, _options.tolerancePixels))
         return;
     m.view = view;
     if (_debug)
@@ -557,7 +550,7 @@ void CdtModule::cull(const View& view, VisibleSet& visible)
 }
 
 CdtModule::Statistics CdtModule::lastStatistics() const { return _impl->stats; }
-bool CdtModule::walksSceneHierarchy() const { return _impl->hierarchy && _impl->hierarchy != &_impl->ownTree; }
-HierarchyLayout CdtModule::walkedLayout() const { return _impl->index.layout(); }
-const std::string& CdtModule::hierarchyProblem() const { return _impl->hierarchyProblem; }
+bool CdtModule::walksSceneHierarchy() const { return _impl->sceneHierarchy.walks(); }
+HierarchyLayout CdtModule::walkedLayout() const { return _impl->sceneHierarchy.index().layout(); }
+const std::string& CdtModule::hierarchyProblem() const { return _impl->sceneHierarchy.problem(); }
 } // namespace osgVis::core

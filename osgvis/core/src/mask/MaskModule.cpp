@@ -8,7 +8,7 @@
 #include <osgVis/core/mask/MaskRasterizer.h>
 #include <osgVis/core/occluders/OccluderBuilder.h>
 #include <osgVis/core/occluders/OccluderSelector.h>
-#include <osgVis/core/spatial/HierarchyIndex.h>
+#include <osgVis/core/spatial/SceneHierarchyChoice.h>
 
 #include <algorithm>
 #include <chrono>
@@ -158,11 +158,10 @@ struct MaskModule::Impl
 {
     const Scene* scene = nullptr;
     MaskKdTree tree; // empty while the renderer's hierarchy serves
-    // The renderer's hierarchy when it serves instead of the tree, as recorded at setScene.
-    std::shared_ptr<const TraversalHierarchy> sceneHierarchy;
-    HierarchyIndex index;
-    std::string hierarchyProblem;
-    // Marks on the renderer's hierarchy: index.objects()[first, end) hidden until `until` (a
+    // The renderer's hierarchy when it serves instead of the tree, as recorded at setScene. Each
+    // box is judged on its own, so siblings may come in any order.
+    SceneHierarchyChoice sceneHierarchy{false};
+    // Marks on the renderer's hierarchy: its index's objects()[first, end) hidden until `until` (a
     // node's subtree, or one object).
     struct RangeMark
     {
@@ -170,7 +169,10 @@ struct MaskModule::Impl
         double until;
     };
     std::vector<RangeMark> rangeMarks;
-    bool hasObjects() const { return sceneHierarchy ? !index.objects().empty() : !tree.empty(); }
+    bool hasObjects() const
+    {
+        return sceneHierarchy.walks() ? !sceneHierarchy.index().objects().empty() : !tree.empty();
+    }
     std::vector<OccluderPolygon> polygons;
     std::vector<std::vector<std::uint32_t>> polygonsOf; // per object (a union of several: each of them)
     std::vector<std::uint32_t> selectedIn;              // per polygon: critical frame that selected it last
@@ -241,7 +243,6 @@ struct MaskModule::Impl
     std::vector<ObjectId> occluders, restingOn;
     std::vector<std::uint32_t> selected, nodeStack;
     std::vector<std::pair<double, std::uint32_t>> rankedPolygons;
-    std::unique_ptr<HierarchyIndex::Walk> walk; // over `index`, which stays in place
     std::uint64_t markBudget = 0;               // work units marking may spend this critical frame
     std::vector<std::uint32_t> groupOrder;      // the order groups are rasterized in
     bool haveMask = false;
@@ -298,12 +299,12 @@ const OcclusionMask& MaskModule::mask() const
 
 bool MaskModule::walksSceneHierarchy() const
 {
-    return _impl->sceneHierarchy != nullptr;
+    return _impl->sceneHierarchy.walks();
 }
 
 const std::string& MaskModule::hierarchyProblem() const
 {
-    return _impl->hierarchyProblem;
+    return _impl->sceneHierarchy.problem();
 }
 
 void MaskModule::setScene(const Scene& scene)
@@ -351,17 +352,9 @@ void MaskModule::setScene(const Scene& scene)
         if (largest > 0.0 && smallest < 0.25 * largest)
             split = MaskKdTree::Split::Planar;
     }
-    m.sceneHierarchy.reset();
-    m.hierarchyProblem.clear();
     m.tree = MaskKdTree();
-    if (_options.sceneHierarchy && scene.hierarchy)
-    {
-        m.index.build(*scene.hierarchy, scene);
-        if (m.index.usable())
-            m.sceneHierarchy = scene.hierarchy;
-        m.hierarchyProblem = m.index.problem();
-    }
-    if (!m.sceneHierarchy)
+    m.sceneHierarchy.choose(scene, _options.sceneHierarchy);
+    if (!m.sceneHierarchy.walks())
         m.tree.build(bounds, inTree, split, _options.maxLeafObjects);
     m.forgetMarks();
     m.statistics = Statistics();
@@ -430,7 +423,7 @@ void MaskModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange
             case SceneChange::Kind::Inserted:
                 m.present[id] = 1;
                 // The recorded hierarchy's boxes do not hold what comes in later.
-                if ((object.flags & OBJECT_DYNAMIC) != 0 || m.sceneHierarchy)
+                if ((object.flags & OBJECT_DYNAMIC) != 0 || m.sceneHierarchy.walks())
                 {
                     makeMoving(id);
                     break;
@@ -493,7 +486,7 @@ void MaskModule::cull(const View& view, VisibleSet& visible)
     // Stamped subtrees and objects drop out; moving objects are tested against the mask, which
     // holds for every eye of the current ball.
     const double t = view.time;
-    std::uint32_t culled = m.sceneHierarchy ? applyHierarchyMarks(t, visible) : applyTreeMarks(t, visible);
+    std::uint32_t culled = m.sceneHierarchy.walks() ? applyHierarchyMarks(t, visible) : applyTreeMarks(t, visible);
     culled += cullMovingObjects(view.eye, visible);
     stats.culled = culled;
 }
@@ -604,7 +597,7 @@ void MaskModule::selectOccluders(const View& view)
     Impl& m = *_impl;
     MaskSelectionInput input;
     input.tree = &m.tree;
-    input.hierarchy = m.sceneHierarchy ? &m.index : nullptr;
+    input.hierarchy = m.sceneHierarchy.walks() ? &m.sceneHierarchy.index() : nullptr;
     input.objects = &_scene->objects;
     input.usable = &m.usable;
     input.view = &view;
@@ -905,7 +898,7 @@ void MaskModule::markHidden(Statistics& stats)
     for (double delta : m.groups.groupDelta)
         outOfViewDelta = std::max(outOfViewDelta, delta);
     MarkPass pass{*this, m, _options, stats, m.criticalView, outOfViewDelta};
-    if (m.sceneHierarchy)
+    if (m.sceneHierarchy.walks())
         pass.markHierarchy();
     else
         pass.markTree();
@@ -914,29 +907,14 @@ void MaskModule::markHidden(Statistics& stats)
 void MaskModule::MarkPass::markHierarchy()
 {
     // The renderer's traversal; its order does not matter (each box is judged on its own).
-    if (!m.walk)
-        m.walk = std::make_unique<HierarchyIndex::Walk>(m.index, view.eye, false);
-    m.walk->restart(view.eye);
-    HierarchyIndex::Walk& walk = *m.walk;
-    const std::vector<ObjectId>& objects = m.index.objects();
-    auto enter = [&](const HierarchyNode& node) -> bool
+    const std::vector<ObjectId>& objects = m.sceneHierarchy.index().objects();
+    // Returns whether to go below the node.
+    auto visit = [&](const HierarchyNode&, const HierarchyIndex::Node& n, std::size_t) -> bool
     {
-        const HierarchyIndex::Node* found = walk.enter(node);
-        if (!found)
-        {
-            ++stats.nodesStrayed; // nothing is marked there: its objects stay as they are
-            return false;
-        }
-        const HierarchyIndex::Node& n = *found;
-        const auto skip = [&]()
-        {
-            walk.leave();
-            return false;
-        };
         const std::uint32_t count = n.subtreeEnd - n.firstObject;
         if (count == 0 || nodeDecided(n.contents, count, [&](double until)
                                       { m.rangeMarks.push_back({n.firstObject, n.subtreeEnd, until}); }))
-            return skip();
+            return false;
         const bool oneByOne = n.leaf() || count < options.stopObjects;
         const std::uint32_t end = oneByOne ? n.subtreeEnd : n.firstObject + n.heldCount;
         for (std::uint32_t i = n.firstObject; i < end; ++i)
@@ -944,11 +922,10 @@ void MaskModule::MarkPass::markHierarchy()
         if (!oneByOne)
             return true;
         recordTested(n.contents);
-        return skip();
+        return false;
     };
-    auto leave = [&](const HierarchyNode&) { walk.leave(); };
-    LambdaVisitor<decltype(enter), decltype(leave)> visitor(enter, leave);
-    m.sceneHierarchy->traverse(view.eye, visitor);
+    // A refused node gets no mark: its objects stay as they are.
+    m.sceneHierarchy.traverse(view.eye, visit, [&]() { ++stats.nodesStrayed; });
 }
 
 void MaskModule::MarkPass::markTree()
@@ -1006,7 +983,7 @@ std::uint32_t MaskModule::applyHierarchyMarks(double t, VisibleSet& visible)
     m.rangeMarks.erase(std::remove_if(m.rangeMarks.begin(), m.rangeMarks.end(),
                                       [&](const Impl::RangeMark& mark) { return !(mark.until > t); }),
                        m.rangeMarks.end());
-    const std::vector<ObjectId>& objects = m.index.objects();
+    const std::vector<ObjectId>& objects = m.sceneHierarchy.index().objects();
     std::uint32_t culled = 0;
     for (const Impl::RangeMark& mark : m.rangeMarks)
         for (std::uint32_t i = mark.first; i < mark.end; ++i)

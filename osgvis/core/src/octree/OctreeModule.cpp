@@ -10,7 +10,7 @@
 #include <osgVis/core/octree/OctreeModule.h>
 
 #include <osgVis/core/occluders/CoplanarUnion.h>
-#include <osgVis/core/spatial/HierarchyIndex.h>
+#include <osgVis/core/spatial/SceneHierarchyChoice.h>
 #include "OccluderShadow.h"
 #include "OcclusionCache.h"
 #include "OcclusionTree.h"
@@ -83,10 +83,9 @@ struct FrontierTask
 struct OctreeModule::Impl
 {
     KdTree tree; // empty while the scene's hierarchy is walked
-    // The renderer's hierarchy, when usable: the index records its nodes' tight boxes and objects.
-    std::shared_ptr<const TraversalHierarchy> sceneHierarchy;
-    HierarchyIndex index;
-    std::string hierarchyProblem;
+    // The renderer's hierarchy, when usable: its index records the nodes' tight boxes and objects.
+    // Each box is tested on its own, so siblings may come in any order.
+    SceneHierarchyChoice sceneHierarchy{false};
     std::vector<BoxOcclusionCache> hierarchyCaches; // per node id
     std::uint32_t hierarchyDepth = 0;               // deepest level the last traversal reached
     std::vector<unsigned> hierarchyPlaneMasks;      // per depth: the plane mask a node passes on
@@ -158,24 +157,19 @@ struct OctreeModule::Impl
                      Range range, unsigned planeMask, const std::vector<std::uint32_t>& partial,
                      std::vector<std::uint32_t>& objectPartial, std::uint32_t depth, TraversalOutput& out);
     void applyCulled(const TraversalOutput& out, const std::vector<std::uint32_t>& items, VisibleSet& visible);
-    bool hasObjects() const { return sceneHierarchy ? !index.objects().empty() : !tree.empty(); }
+    bool hasObjects() const
+    {
+        return sceneHierarchy.walks() ? !sceneHierarchy.index().objects().empty() : !tree.empty();
+    }
     bool fusedHidden(const Aabb& box, const std::vector<std::uint32_t>& partial, TraversalOutput& out);
 };
 
 void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
 {
-    sceneHierarchy.reset();
-    hierarchyProblem.clear();
     tree = KdTree();
-    if (options.sceneHierarchy && scene.hierarchy)
-    {
-        index.build(*scene.hierarchy, scene);
-        if (index.usable())
-            sceneHierarchy = scene.hierarchy;
-        hierarchyProblem = index.problem();
-    }
-    hierarchyCaches.assign(sceneHierarchy ? sceneHierarchy->nodeCount() : 0, BoxOcclusionCache());
-    if (!sceneHierarchy)
+    sceneHierarchy.choose(scene, options.sceneHierarchy);
+    hierarchyCaches.assign(sceneHierarchy.walks() ? sceneHierarchy.hierarchy()->nodeCount() : 0, BoxOcclusionCache());
+    if (!sceneHierarchy.walks())
     {
         std::vector<Aabb> boxes;
         boxes.reserve(scene.objects.size());
@@ -737,12 +731,12 @@ OctreeModule::Statistics OctreeModule::lastStatistics() const
 
 bool OctreeModule::walksSceneHierarchy() const
 {
-    return _impl->sceneHierarchy != nullptr;
+    return _impl->sceneHierarchy.walks();
 }
 
 const std::string& OctreeModule::hierarchyProblem() const
 {
-    return _impl->hierarchyProblem;
+    return _impl->sceneHierarchy.problem();
 }
 
 void OctreeModule::Impl::beginQuery(const OctreeOptions& options, const Vec3& center, const Vec3& halfExtent)
@@ -825,10 +819,10 @@ void OctreeModule::Impl::traverseAll(const Scene& scene, const OctreeOptions& op
     serial.culled.clear();
     serial.debugNodes.clear();
     serial.statistics = Statistics();
-    if (sceneHierarchy)
+    if (sceneHierarchy.walks())
     {
         traverseHierarchy(scene, options);
-        applyCulled(serial, index.objects(), visible);
+        applyCulled(serial, sceneHierarchy.index().objects(), visible);
         return;
     }
     const bool parallel = !frontier.empty() && !debug;
@@ -877,32 +871,20 @@ void OctreeModule::Impl::applyCulled(const TraversalOutput& out, const std::vect
 
 // The renderer's traversal, with the tests of `traverse` on the recorded nodes. Its order does not
 // matter (each box is tested on its own), so siblings are accepted in any order; a node that
-// differs from the recorded one is kept with everything below it. Ranges index index.objects(),
-// where a node's held objects come first and its subtree's follow.
+// differs from the recorded one is kept with everything below it. Ranges index the hierarchy
+// index's objects(), where a node's held objects come first and its subtree's follow.
 void OctreeModule::Impl::traverseHierarchy(const Scene& scene, const OctreeOptions& options)
 {
     TraversalOutput& out = serial;
-    HierarchyIndex::Walk walk(index, eye, false);
-    const std::vector<ObjectId>& items = index.objects();
+    const std::vector<ObjectId>& items = sceneHierarchy.index().objects();
     std::vector<unsigned>& planeMasks = hierarchyPlaneMasks; // kept between culls: no allocation once warm
     hierarchyDepth = 0;
-    auto enter = [&](const HierarchyNode& node) -> bool
+    // Returns whether to go below the node.
+    auto visit = [&](const HierarchyNode& node, const HierarchyIndex::Node& n, std::size_t walkDepth) -> bool
     {
-        const HierarchyIndex::Node* found = walk.enter(node);
-        if (!found)
-        {
-            ++out.statistics.nodesStrayed;
-            return false;
-        }
-        const HierarchyIndex::Node& n = *found;
-        const std::uint32_t depth = std::uint32_t(walk.depth() - 1);
-        const auto skip = [&]()
-        {
-            walk.leave();
-            return false;
-        };
+        const std::uint32_t depth = std::uint32_t(walkDepth);
         if (n.contents.empty())
-            return skip();
+            return false;
         hierarchyDepth = std::max(hierarchyDepth, depth);
         if (out.lists.size() < depth + 2)
             out.lists.resize(depth + 2);
@@ -923,7 +905,7 @@ void OctreeModule::Impl::traverseHierarchy(const Scene& scene, const OctreeOptio
             ++out.statistics.nodesOutsideFrustum;
             out.culled.push_back(subtree);
             record(n.contents, NodeState::OutsideFrustum, depth);
-            return skip();
+            return false;
         }
         std::vector<std::uint32_t>& partial = out.lists[depth];
         if (!occluders.empty() && testBox(hierarchyCaches[node.id], n.contents, occluders, options.fuseConnected,
@@ -932,25 +914,23 @@ void OctreeModule::Impl::traverseHierarchy(const Scene& scene, const OctreeOptio
             ++out.statistics.nodesInvisible;
             out.culled.push_back(subtree);
             record(n.contents, NodeState::Invisible, depth);
-            return skip();
+            return false;
         }
         if (occluders.empty())
             partial.clear();
         if (partial.empty() && inFrustum == Containment::Inside)
         {
             record(n.contents, NodeState::Visible, depth); // nothing below can be culled any more
-            return skip();
+            return false;
         }
         // lists[depth + 1] is scratch here, before the children use it.
         testObjects(scene, options, items, {n.firstObject, n.heldCount}, planeMask, partial, out.lists[depth + 1],
                     depth + 1, out);
         if (n.subtreeEnd == n.firstObject + n.heldCount)
-            return skip(); // nothing held below
+            return false; // nothing held below
         planeMasks[depth] = planeMask;
         return true;
     };
-    auto leave = [&](const HierarchyNode&) { walk.leave(); };
-    LambdaVisitor<decltype(enter), decltype(leave)> visitor(enter, leave);
-    sceneHierarchy->traverse(eye, visitor);
+    sceneHierarchy.traverse(eye, visit, [&]() { ++out.statistics.nodesStrayed; });
 }
 } // namespace osgVis::core
