@@ -196,7 +196,44 @@ void addThreadingOptions(CommandLine& line, BenchOptions& options)
 // The older options that choose a run without a subcommand.
 void addRunChoosingOptions(CommandLine& line, BenchOptions& options)
 {
-    line.flag({"--dynamic"}, options.dynamic).flag({"--paged"}, options.paged).value({"--dump-visible"}, options.dumpVisibleDir);
+    line.flag({"--dynamic"}, options.dynamic).flag({"--paged"}, options.paged);
+}
+
+void addDumpOption(CommandLine& line, BenchOptions& options)
+{
+    line.value({"--dump-visible"}, options.dumpVisibleDir);
+}
+
+void addJsonOption(CommandLine& line, BenchOptions& options)
+{
+    line.value({"--json"}, options.jsonFile);
+}
+
+using OptionGroup = void (*)(CommandLine&, BenchOptions&);
+
+// The option groups of a subcommand beside the scene's (dump has no JSON: the dump is its output);
+// without a subcommand, every group.
+std::vector<OptionGroup> groupsOf(const BenchOptions& options)
+{
+    if (!options.commandGiven)
+        return {addWalkAndModeOptions, addReportOptions, addSweepOptions, addPagingOptions, addVolumeOptions,
+                addCellsOptions, addThreadingOptions, addRunChoosingOptions, addDumpOption, addJsonOption};
+    switch (options.command)
+    {
+    case BenchCommand::Run:
+        return {addWalkAndModeOptions, addReportOptions, addSweepOptions, addThreadingOptions, addJsonOption};
+    case BenchCommand::Dynamic:
+        return {addWalkAndModeOptions, addJsonOption};
+    case BenchCommand::Paged:
+        return {addWalkAndModeOptions, addPagingOptions, addJsonOption};
+    case BenchCommand::Volume:
+        return {addVolumeOptions, addJsonOption};
+    case BenchCommand::Cells:
+        return {addVolumeOracleOptions, addCellsOptions, addJsonOption};
+    case BenchCommand::Dump:
+        return {addWalkAndModeOptions, addDumpOption};
+    }
+    return {};
 }
 
 // The options a subcommand (or none: every option) takes.
@@ -205,47 +242,8 @@ CommandLine subcommandOptions(BenchOptions& options)
     CommandLine line;
     line.flag({"--help", "-h"}, options.help);
     addSceneOptions(line, options);
-    if (!options.commandGiven)
-    {
-        addWalkAndModeOptions(line, options);
-        addReportOptions(line, options);
-        addSweepOptions(line, options);
-        addPagingOptions(line, options);
-        addVolumeOptions(line, options);
-        addCellsOptions(line, options);
-        addThreadingOptions(line, options);
-        addRunChoosingOptions(line, options);
-        line.value({"--json"}, options.jsonFile);
-        return line;
-    }
-    switch (options.command)
-    {
-    case BenchCommand::Run:
-        addWalkAndModeOptions(line, options);
-        addReportOptions(line, options);
-        addSweepOptions(line, options);
-        addThreadingOptions(line, options);
-        break;
-    case BenchCommand::Dynamic:
-        addWalkAndModeOptions(line, options);
-        break;
-    case BenchCommand::Paged:
-        addWalkAndModeOptions(line, options);
-        addPagingOptions(line, options);
-        break;
-    case BenchCommand::Volume:
-        addVolumeOptions(line, options);
-        break;
-    case BenchCommand::Cells:
-        addVolumeOracleOptions(line, options);
-        addCellsOptions(line, options);
-        break;
-    case BenchCommand::Dump:
-        addWalkAndModeOptions(line, options);
-        line.value({"--dump-visible"}, options.dumpVisibleDir);
-        return line; // no JSON: the dump is its output
-    }
-    line.value({"--json"}, options.jsonFile);
+    for (const OptionGroup add : groupsOf(options))
+        add(line, options);
     return line;
 }
 

@@ -25,6 +25,13 @@ struct TriangleIndices
     void operator()(unsigned a, unsigned b, unsigned c) { out->insert(out->end(), {a, b, c}); }
 };
 
+// Adds `item` to one of the model's lists; its index there, which glTF's references use.
+template <class T> int append(std::vector<T>& list, const T& item)
+{
+    list.push_back(item);
+    return int(list.size() - 1);
+}
+
 class Exporter
 {
 public:
@@ -57,8 +64,7 @@ public:
             }
         if (out.mesh < 0 && out.children.empty())
             return -1;
-        model.nodes.push_back(out);
-        return int(model.nodes.size() - 1);
+        return append(model.nodes, out);
     }
 
 private:
@@ -98,18 +104,15 @@ private:
             primitive.indices = indexAccessor(indices);
             out.primitives.push_back(primitive);
         }
-        int index = -1;
-        if (!out.primitives.empty())
-        {
-            model.meshes.push_back(out);
-            index = int(model.meshes.size() - 1);
-        }
+        const int index = out.primitives.empty() ? -1 : append(model.meshes, out);
         _meshes[&geode] = index;
         return index;
     }
 
-    // Appends `bytes` to the one buffer as a new buffer view (4-byte aligned).
-    int bufferView(const void* bytes, std::size_t size, int target)
+    // An accessor of `count` elements over `size` bytes, which it appends to the one buffer as a
+    // new buffer view (4-byte aligned); the caller adds it to the model (append).
+    tinygltf::Accessor viewAccessor(const void* bytes, std::size_t size, std::size_t count, int target,
+                                    int componentType, int type)
     {
         std::vector<unsigned char>& data = model.buffers[0].data;
         data.resize((data.size() + 3) / 4 * 4);
@@ -120,18 +123,19 @@ private:
         view.target = target;
         data.insert(data.end(), static_cast<const unsigned char*>(bytes),
                     static_cast<const unsigned char*>(bytes) + size);
-        model.bufferViews.push_back(view);
-        return int(model.bufferViews.size() - 1);
+        tinygltf::Accessor accessor;
+        accessor.bufferView = append(model.bufferViews, view);
+        accessor.componentType = componentType;
+        accessor.type = type;
+        accessor.count = count;
+        return accessor;
     }
 
     int positions(const osg::Vec3Array& vertices)
     {
-        tinygltf::Accessor accessor;
-        accessor.bufferView =
-            bufferView(vertices.getDataPointer(), vertices.size() * sizeof(osg::Vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
-        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-        accessor.type = TINYGLTF_TYPE_VEC3;
-        accessor.count = vertices.size();
+        tinygltf::Accessor accessor =
+            viewAccessor(vertices.getDataPointer(), vertices.size() * sizeof(osg::Vec3), vertices.size(),
+                         TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3);
         accessor.minValues.assign(3, std::numeric_limits<double>::max());
         accessor.maxValues.assign(3, std::numeric_limits<double>::lowest());
         for (const osg::Vec3& v : vertices)
@@ -140,20 +144,14 @@ private:
                 accessor.minValues[std::size_t(c)] = std::min(accessor.minValues[std::size_t(c)], double(v[c]));
                 accessor.maxValues[std::size_t(c)] = std::max(accessor.maxValues[std::size_t(c)], double(v[c]));
             }
-        model.accessors.push_back(accessor);
-        return int(model.accessors.size() - 1);
+        return append(model.accessors, accessor);
     }
 
     int indexAccessor(const std::vector<std::uint32_t>& indices)
     {
-        tinygltf::Accessor accessor;
-        accessor.bufferView =
-            bufferView(indices.data(), indices.size() * sizeof(std::uint32_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-        accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-        accessor.type = TINYGLTF_TYPE_SCALAR;
-        accessor.count = indices.size();
-        model.accessors.push_back(accessor);
-        return int(model.accessors.size() - 1);
+        return append(model.accessors, viewAccessor(indices.data(), indices.size() * sizeof(std::uint32_t),
+                                                    indices.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER,
+                                                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR));
     }
 
     std::map<const osg::Geode*, int> _meshes;
@@ -179,9 +177,8 @@ bool writeGltf(osg::Node& root, const std::string& path, std::string& error)
     yUp.name = "Z-up to glTF Y-up";
     yUp.matrix = {1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1};
     yUp.children = {top};
-    exporter.model.nodes.push_back(yUp);
     tinygltf::Scene scene;
-    scene.nodes = {int(exporter.model.nodes.size() - 1)};
+    scene.nodes = {append(exporter.model.nodes, yUp)};
     exporter.model.scenes.push_back(scene);
     exporter.model.defaultScene = 0;
     exporter.model.asset.version = "2.0";

@@ -3,6 +3,7 @@
 
 #include <osgVis/Statistics>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -19,33 +20,21 @@ double attribute(const osg::Stats& stats, unsigned frameNumber, const std::strin
     return stats.getAttribute(frameNumber, name, value) ? value : 0.0;
 }
 
-struct Means
+// The frames' mean figures (a FrameFigures holds them); hasOsgVis only where every frame has it.
+FrameFigures meansOf(const std::vector<FrameFigures>& frames)
 {
-    double visibleObjects = 0.0, drawnTriangles = 0.0, cullMilliseconds = 0.0;
-    double osgDrawables = 0.0, osgTriangles = 0.0, osgCullMilliseconds = 0.0;
-    bool hasOsgVis = false;
-};
-
-Means meansOf(const std::vector<FrameFigures>& frames)
-{
-    Means means;
+    FrameFigures means;
     if (frames.empty())
         return means;
-    means.hasOsgVis = true;
-    for (const FrameFigures& f : frames)
+    means.hasOsgVis = std::all_of(frames.begin(), frames.end(), [](const FrameFigures& f) { return f.hasOsgVis; });
+    for (double FrameFigures::*figure :
+         {&FrameFigures::visibleObjects, &FrameFigures::drawnTriangles, &FrameFigures::cullMilliseconds,
+          &FrameFigures::osgDrawables, &FrameFigures::osgTriangles, &FrameFigures::osgCullMilliseconds})
     {
-        means.hasOsgVis = means.hasOsgVis && f.hasOsgVis;
-        means.visibleObjects += f.visibleObjects;
-        means.drawnTriangles += f.drawnTriangles;
-        means.cullMilliseconds += f.cullMilliseconds;
-        means.osgDrawables += f.osgDrawables;
-        means.osgTriangles += f.osgTriangles;
-        means.osgCullMilliseconds += f.osgCullMilliseconds;
+        for (const FrameFigures& f : frames)
+            means.*figure += f.*figure;
+        means.*figure /= double(frames.size());
     }
-    const double n = double(frames.size());
-    for (double* sum : {&means.visibleObjects, &means.drawnTriangles, &means.cullMilliseconds, &means.osgDrawables,
-                        &means.osgTriangles, &means.osgCullMilliseconds})
-        *sum /= n;
     return means;
 }
 
@@ -98,7 +87,7 @@ FrameFigures readFrameFigures(const osg::Stats& stats, unsigned frameNumber)
 
 void RunReport::write(const std::string& directory) const
 {
-    const Means means = meansOf(frames);
+    const FrameFigures means = meansOf(frames);
     // Mode "osg" has no adapter figures: OSG's own counts of what it drew stand in for them.
     const double visible = means.hasOsgVis ? means.visibleObjects : means.osgDrawables;
     const double triangles = means.hasOsgVis ? means.drawnTriangles : means.osgTriangles;

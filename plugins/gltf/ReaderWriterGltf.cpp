@@ -19,6 +19,7 @@
 // pager threads may read at once.
 //
 // `.glb` reaches this plugin through osgdb_glb, a link to this module (OSG looks for osgdb_<ext>).
+#include "../NodeReaderWriter.h"
 #include "GltfParse.h"
 #include "GltfScene.h"
 
@@ -26,7 +27,6 @@
 
 #include <osg/MatrixTransform>
 #include <osgDB/FileNameUtils>
-#include <osgDB/FileUtils>
 #include <osgDB/Registry>
 #include <osgDB/fstream>
 
@@ -53,7 +53,7 @@ bool hasOption(const osgDB::Options* options, const std::string& word)
 }
 } // namespace
 
-class ReaderWriterGltf : public osgDB::ReaderWriter
+class ReaderWriterGltf : public plugins::NodeReaderWriter
 {
 public:
     ReaderWriterGltf()
@@ -64,30 +64,21 @@ public:
     }
     const char* className() const override { return "osgVis glTF 2.0 reader"; }
 
-    ReadResult readObject(const std::string& file, const Options* options) const override
+    using NodeReaderWriter::readNode;
+    ReadResult readNode(std::istream& in, const Options* options) const override
     {
-        return readNode(file, options);
+        const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        return read(bytes, "<stream>", "", options);
     }
-    ReadResult readObject(std::istream& in, const Options* options) const override { return readNode(in, options); }
 
-    ReadResult readNode(const std::string& file, const Options* options) const override
+protected:
+    ReadResult readFound(const std::string& file, const std::string& path, const Options* options) const override
     {
-        if (!acceptsExtension(osgDB::getLowerCaseFileExtension(file)))
-            return ReadResult::FILE_NOT_HANDLED;
-        const std::string path = osgDB::findDataFile(file, options);
-        if (path.empty())
-            return ReadResult::FILE_NOT_FOUND;
         osgDB::ifstream in(path.c_str(), std::ios::binary);
         if (!in)
             return ReadResult("gltf: " + file + ": cannot open " + path);
         const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
         return read(bytes, osgDB::getSimpleFileName(path), osgDB::getFilePath(path), options);
-    }
-
-    ReadResult readNode(std::istream& in, const Options* options) const override
-    {
-        const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-        return read(bytes, "<stream>", "", options);
     }
 
 private:

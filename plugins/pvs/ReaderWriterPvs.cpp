@@ -15,6 +15,7 @@
 // Writing x.pvs bakes the node and saves it beside as x.osgb (option "model=<file>" names an
 // existing model file instead, which must be the same model); a group read from a .pvs writes its
 // model. Read and write keep no state, so pager threads may call them at once.
+#include "../NodeReaderWriter.h"
 #include "PvsModelFiles.h"
 #include "PvsTrust.h"
 
@@ -128,48 +129,13 @@ osgDB::ReaderWriter::ReadResult showWithModel(core::PvsFile&& pvs, const std::st
 }
 } // namespace
 
-class ReaderWriterPvs : public osgDB::ReaderWriter
+class ReaderWriterPvs : public plugins::NodeReaderWriter
 {
 public:
     ReaderWriterPvs() { supportsExtension("pvs", "osgVis cell-and-portal visibility (model + baked PVS)"); }
     const char* className() const override { return "osgVis .pvs reader/writer"; }
 
-    ReadResult readObject(const std::string& file, const Options* options) const override
-    {
-        return readNode(file, options);
-    }
-    ReadResult readObject(std::istream& in, const Options* options) const override { return readNode(in, options); }
-
-    ReadResult readNode(const std::string& file, const Options* options) const override
-    {
-        if (!acceptsExtension(osgDB::getLowerCaseFileExtension(file)))
-            return ReadResult::FILE_NOT_HANDLED;
-        const std::string pvsFile = osgDB::findDataFile(file, options);
-        if (pvsFile.empty())
-            return ReadResult::FILE_NOT_FOUND;
-        try
-        {
-            core::PvsFile pvs;
-            try
-            {
-                pvs = core::readPvsFile(pvsFile);
-            }
-            catch (const core::PvsFormatError& e)
-            {
-                // The messages below name the file already; keep the reason only.
-                std::string reason = e.what();
-                if (reason.rfind(pvsFile + ": ", 0) == 0)
-                    reason.erase(0, pvsFile.size() + 2);
-                return showCorruptWithModelBeside(pvsFile, reason, options);
-            }
-            return showWithModel(std::move(pvs), pvsFile, options);
-        }
-        catch (const std::exception& e) // e.g. no "cellportal" module registered
-        {
-            return ReadResult("osgVis: cannot show " + pvsFile + ": " + e.what());
-        }
-    }
-
+    using NodeReaderWriter::readNode;
     // A stream has no folder: the model it names is looked up relative to the options' database path.
     ReadResult readNode(std::istream& in, const Options* options) const override
     {
@@ -246,6 +212,32 @@ public:
     WriteResult writeNode(const osg::Node&, std::ostream&, const Options*) const override
     {
         return WriteResult("osgVis: a .pvs is written to a file, with its model beside it, not to a stream");
+    }
+
+protected:
+    ReadResult readFound(const std::string&, const std::string& pvsFile, const Options* options) const override
+    {
+        try
+        {
+            core::PvsFile pvs;
+            try
+            {
+                pvs = core::readPvsFile(pvsFile);
+            }
+            catch (const core::PvsFormatError& e)
+            {
+                // The messages below name the file already; keep the reason only.
+                std::string reason = e.what();
+                if (reason.rfind(pvsFile + ": ", 0) == 0)
+                    reason.erase(0, pvsFile.size() + 2);
+                return showCorruptWithModelBeside(pvsFile, reason, options);
+            }
+            return showWithModel(std::move(pvs), pvsFile, options);
+        }
+        catch (const std::exception& e) // e.g. no "cellportal" module registered
+        {
+            return ReadResult("osgVis: cannot show " + pvsFile + ": " + e.what());
+        }
     }
 };
 } // namespace osgVis::pvsplugin

@@ -74,16 +74,23 @@ bool checkOptions(const VisibilityGroup&)
     return true;
 }
 
-bool readAsyncLookAheadFrames(osgDB::InputStream& is, VisibilityGroup& group)
+// Reads a Value into one field of `options` (a copy of the group's) and hands the copy to `set`.
+template <class Value, class Options, class Field, class Set>
+bool readOption(osgDB::InputStream& is, Options options, Field Options::*field, Set set)
 {
-    unsigned frames = 0;
-    is >> frames;
+    Value value{};
+    is >> value;
     if (is.getException())
         return false;
-    osgVis::core::AsyncOptions options = group.getAsyncOptions();
-    options.lookAheadFrames = frames;
-    group.setAsync(group.getAsync(), options);
+    options.*field = value;
+    set(options);
     return true;
+}
+
+bool readAsyncLookAheadFrames(osgDB::InputStream& is, VisibilityGroup& group)
+{
+    return readOption<unsigned>(is, group.getAsyncOptions(), &osgVis::core::AsyncOptions::lookAheadFrames,
+                                [&](const auto& options) { group.setAsync(group.getAsync(), options); });
 }
 
 bool writeAsyncLookAheadFrames(osgDB::OutputStream& os, const VisibilityGroup& group)
@@ -94,14 +101,8 @@ bool writeAsyncLookAheadFrames(osgDB::OutputStream& os, const VisibilityGroup& g
 
 bool readAsyncSlack(osgDB::InputStream& is, VisibilityGroup& group)
 {
-    double slack = 0.0;
-    is >> slack;
-    if (is.getException())
-        return false;
-    osgVis::core::AsyncOptions options = group.getAsyncOptions();
-    options.slack = slack;
-    group.setAsync(group.getAsync(), options);
-    return true;
+    return readOption<double>(is, group.getAsyncOptions(), &osgVis::core::AsyncOptions::slack,
+                              [&](const auto& options) { group.setAsync(group.getAsync(), options); });
 }
 
 bool writeAsyncSlack(osgDB::OutputStream& os, const VisibilityGroup& group)
@@ -112,14 +113,8 @@ bool writeAsyncSlack(osgDB::OutputStream& os, const VisibilityGroup& group)
 
 bool readKeepTriangles(osgDB::InputStream& is, VisibilityGroup& group)
 {
-    bool keep = true;
-    is >> keep;
-    if (is.getException())
-        return false;
-    osgVis::ExtractionOptions options = group.getExtractionOptions();
-    options.keepTriangles = keep;
-    group.setExtractionOptions(options);
-    return true;
+    return readOption<bool>(is, group.getExtractionOptions(), &osgVis::ExtractionOptions::keepTriangles,
+                            [&](const auto& options) { group.setExtractionOptions(options); });
 }
 
 bool writeKeepTriangles(osgDB::OutputStream& os, const VisibilityGroup& group)

@@ -157,22 +157,29 @@ bool CullVisitor::cullRootOverTree(osg::Group& root)
     return true;
 }
 
+namespace
+{
+// OSG's own cull of `node`, unless osgVis has already decided it where it stands.
+template <class Node> void osgCullsUnless(bool decided, osgUtil::CullVisitor& visitor, Node& node)
+{
+    if (!decided)
+        visitor.osgUtil::CullVisitor::apply(node);
+}
+} // namespace
+
 void CullVisitor::apply(osg::Group& node)
 {
-    if (!cullRootOverTree(node))
-        osgUtil::CullVisitor::apply(node);
+    osgCullsUnless(cullRootOverTree(node), *this, node);
 }
 
 void CullVisitor::apply(osg::Geode& node)
 {
-    if (!cullRootOverTree(node))
-        osgUtil::CullVisitor::apply(node);
+    osgCullsUnless(cullRootOverTree(node), *this, node);
 }
 
 void CullVisitor::apply(osg::Transform& node)
 {
-    if (!cullRootOverTree(node))
-        osgUtil::CullVisitor::apply(node);
+    osgCullsUnless(cullRootOverTree(node), *this, node);
 }
 
 void CullVisitor::apply(osg::Drawable& drawable)
@@ -212,14 +219,12 @@ bool CullVisitor::pagedNodeHidden(osg::Group& node)
 
 void CullVisitor::apply(osg::PagedLOD& node)
 {
-    if (!pagedNodeHidden(node))
-        osgUtil::CullVisitor::apply(node);
+    osgCullsUnless(pagedNodeHidden(node), *this, node);
 }
 
 void CullVisitor::apply(osg::ProxyNode& node)
 {
-    if (!pagedNodeHidden(node))
-        osgUtil::CullVisitor::apply(node);
+    osgCullsUnless(pagedNodeHidden(node), *this, node);
 }
 
 void CullVisitor::installAsPrototype(const std::string& modes)

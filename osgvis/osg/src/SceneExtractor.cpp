@@ -182,41 +182,27 @@ struct VertexBoundsVisitor : public osg::ConstArrayVisitor
 {
     VertexBoundsVisitor(BoundsAccumulator& out, const std::vector<bool>* used) : _out(out), _used(used) {}
 
-    void apply(const osg::Vec2Array& a) override
-    {
-        each(a, [&](const osg::Vec2& v) { _out.add({v.x(), v.y(), 0.0}); });
-    }
-    void apply(const osg::Vec3Array& a) override
-    {
-        each(a, [&](const osg::Vec3& v) { _out.add(v); });
-    }
-    void apply(const osg::Vec4Array& a) override
-    {
-        each(a, [&](const osg::Vec4& v) { _out.addHomogeneous(v); });
-    }
-    void apply(const osg::Vec2dArray& a) override
-    {
-        each(a, [&](const osg::Vec2d& v) { _out.add({v.x(), v.y(), 0.0}); });
-    }
-    void apply(const osg::Vec3dArray& a) override
-    {
-        each(a, [&](const osg::Vec3d& v) { _out.add(v); });
-    }
-    void apply(const osg::Vec4dArray& a) override
-    {
-        each(a, [&](const osg::Vec4d& v) { _out.addHomogeneous(v); });
-    }
+    // note: float and double arrays share the position rules (add below), widened to double.
+    void apply(const osg::Vec2Array& a) override { each(a); }
+    void apply(const osg::Vec3Array& a) override { each(a); }
+    void apply(const osg::Vec4Array& a) override { each(a); }
+    void apply(const osg::Vec2dArray& a) override { each(a); }
+    void apply(const osg::Vec3dArray& a) override { each(a); }
+    void apply(const osg::Vec4dArray& a) override { each(a); }
 
     bool handled = false;
 
 private:
-    template <class ArrayT, class F> void each(const ArrayT& array, F f)
+    template <class ArrayT> void each(const ArrayT& array)
     {
         handled = true;
         for (std::size_t i = 0; i < array.size(); ++i)
             if (!_used || (i < _used->size() && (*_used)[i]))
-                f(array[i]);
+                add(array[i]);
     }
+    void add(const osg::Vec2d& v) { _out.add({v.x(), v.y(), 0.0}); }
+    void add(const osg::Vec3d& v) { _out.add(v); }
+    void add(const osg::Vec4d& v) { _out.addHomogeneous(v); }
 
     BoundsAccumulator& _out;
     const std::vector<bool>* _used;

@@ -91,6 +91,13 @@ void countVisible(const ExtractedScene& scene, std::size_t objects, const core::
     figures.pagedNodesSkipped = figures.pagedNodes - pagedVisible; // deferred ones included
 }
 
+// A copy of a member taken under `mutex` (the getters: other threads cull while they are called).
+template <class T> T lockedCopy(std::mutex& mutex, const T& member)
+{
+    std::lock_guard<std::mutex> lock(mutex);
+    return member;
+}
+
 // The core scene of an extraction, kept alive (with the extraction) for as long as the pointer.
 std::shared_ptr<const core::Scene> sharedScene(const osg::ref_ptr<const ExtractedScene>& extraction)
 {
@@ -132,8 +139,7 @@ void ViewCuller::setBakedData(std::shared_ptr<const core::BakedData> baked)
 
 std::shared_ptr<const core::BakedData> ViewCuller::getBakedData() const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _baked;
+    return lockedCopy(_mutex, _baked);
 }
 
 void ViewCuller::setAsync(bool on, const core::AsyncOptions& options)
@@ -159,38 +165,32 @@ void ViewCuller::setPagingOptions(const PagingOptions& options)
 
 PagingOptions ViewCuller::getPagingOptions() const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _pagingOptions;
+    return lockedCopy(_mutex, _pagingOptions);
 }
 
 core::BackOffOptions ViewCuller::getBackOffOptions() const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _backOffOptions;
+    return lockedCopy(_mutex, _backOffOptions);
 }
 
 bool ViewCuller::getAsync() const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _async;
+    return lockedCopy(_mutex, _async);
 }
 
 core::AsyncOptions ViewCuller::getAsyncOptions() const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _asyncOptions;
+    return lockedCopy(_mutex, _asyncOptions);
 }
 
 ExtractionOptions ViewCuller::getExtractionOptions() const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _extractionOptions;
+    return lockedCopy(_mutex, _extractionOptions);
 }
 
 std::string ViewCuller::getModes() const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _modes;
+    return lockedCopy(_mutex, _modes);
 }
 
 void ViewCuller::setExtractionOptions(const ExtractionOptions& options)
@@ -406,8 +406,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
 
 CullStatistics ViewCuller::getLastStatistics() const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _last;
+    return lockedCopy(_mutex, _last);
 }
 
 osg::ref_ptr<const ExtractedScene> ViewCuller::getScene() const

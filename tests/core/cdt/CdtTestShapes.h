@@ -2,6 +2,7 @@
 #pragma once
 // Random convex polygons on the grid for the CDT record's tests (integer convex hulls).
 #include <osgVis/core/cdt/CoverageTriangulation.h>
+#include <osgVis/core/geometry/ConvexHull2.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -18,30 +19,12 @@ inline std::int64_t cross(GridPoint o, GridPoint a, GridPoint b)
            (std::int64_t(a.y) - o.y) * (std::int64_t(b.x) - o.x);
 }
 
-/// Counter-clockwise convex hull (Andrew's monotone chain), collinear points dropped.
+/// Counter-clockwise convex hull (the library's monotone chain), repeated and collinear points dropped.
 inline std::vector<GridPoint> hull(std::vector<GridPoint> p)
 {
-    std::sort(p.begin(), p.end(), [](GridPoint a, GridPoint b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-    p.erase(std::unique(p.begin(), p.end(), [](GridPoint a, GridPoint b) { return a.x == b.x && a.y == b.y; }),
-            p.end());
-    if (p.size() < 3)
-        return p;
-    std::vector<GridPoint> h(2 * p.size());
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-    {
-        while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0)
-            --k;
-        h[k++] = p[i];
-    }
-    for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i)
-    {
-        while (k >= t && cross(h[k - 2], h[k - 1], p[i - 1]) <= 0)
-            --k;
-        h[k++] = p[i - 1];
-    }
-    h.resize(k - 1);
-    return h;
+    std::vector<GridPoint> scratch;
+    osgVis::core::convexHullInPlace(p, scratch, cross);
+    return p;
 }
 
 /// A random convex polygon around (cx, cy) of about `size` grid units; `thin` squeezes it to a sliver.

@@ -2,6 +2,8 @@
 // Random occluder groups for the mask rasterizer tests (RandomOccluderGroups.h).
 #include "RandomOccluderGroups.h"
 
+#include <osgVis/core/geometry/ConvexHull2.h>
+
 #include <glm/glm.hpp>
 
 #include <algorithm>
@@ -67,25 +69,11 @@ std::vector<glm::dvec2> randomConvexPolygon(std::mt19937& random, double size)
         const double angle = unit(random) * 2.0 * M_PI, r = radius * std::sqrt(unit(random));
         p = middle + glm::dvec2{r * std::cos(angle), r * std::sin(angle) * (0.3 + unit(random))};
     }
-    std::sort(points.begin(), points.end(), [](auto a, auto b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-    auto cross = [](glm::dvec2 o, glm::dvec2 a, glm::dvec2 b)
-    { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
-    std::vector<glm::dvec2> hull(2 * points.size());
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < points.size(); ++i)
-    {
-        while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
-            --k;
-        hull[k++] = points[i];
-    }
-    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;)
-    {
-        while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
-            --k;
-        hull[k++] = points[i];
-    }
-    hull.resize(k - 1);
-    return hull;
+    std::vector<glm::dvec2> scratch;
+    osgVis::core::convexHullInPlace(points, scratch,
+                                    [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b)
+                                    { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); });
+    return points;
 }
 
 DepthPlane randomPlane(std::mt19937& random, glm::dvec2 around)
