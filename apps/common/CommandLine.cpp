@@ -209,13 +209,6 @@ std::array<double, 3> parseTriple(const std::string& option, const std::string& 
     return values;
 }
 
-bool parseOnOffValue(const std::string& option, const std::string& text)
-{
-    if (text != "on" && text != "off")
-        throw UsageError(option + " takes on or off, got '" + text + "'");
-    return text == "on";
-}
-
 std::string quotedCommandLine(int argc, char** argv)
 {
     std::string line;

@@ -100,8 +100,6 @@ std::vector<unsigned> parseUnsignedList(const std::string& option, const std::st
 void parseSize(const std::string& option, const std::string& text, unsigned& width, unsigned& height);
 // x,y,z: three finite numbers.
 std::array<double, 3> parseTriple(const std::string& option, const std::string& text);
-// "on" or "off".
-bool parseOnOffValue(const std::string& option, const std::string& text);
 // The command line as a shell would take it back (arguments with spaces or quotes quoted), for reports.
 std::string quotedCommandLine(int argc, char** argv);
 } // namespace osgVis::apps

@@ -97,7 +97,7 @@ void addWalkAndModeOptions(CommandLine& line, BenchOptions& options)
                    options.cube = true;
                })
         .value({"--modes"}, [&](const std::string& v) { options.modes = splitList(v, ','); })
-        .value({"--backoff"}, [&](const std::string& v) { options.backOff = apps::parseOnOffValue("--backoff", v); })
+        .value({"--backoff"}, [&](const std::string& v) { options.backOff = apps::parseOnOff("--backoff", v, false).front(); })
         .value({"--supersample"}, number(options.supersample, "--supersample"));
 }
 

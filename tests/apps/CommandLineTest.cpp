@@ -136,7 +136,7 @@ TEST(CommandLine, NumbersAreFiniteDecimals)
     EXPECT_EQ(errorOf([&] { parseNumber("--r", "0", 0.5, 2.0); }), "--r must lie between 0.5 and 2, got '0'");
 }
 
-TEST(CommandLine, SizesTriplesListsAndSwitches)
+TEST(CommandLine, SizesTriplesAndLists)
 {
     unsigned width = 0, height = 0;
     osgVis::apps::parseSize("--size", "640x480", width, height);
@@ -153,9 +153,6 @@ TEST(CommandLine, SizesTriplesListsAndSwitches)
                   std::string("--eye expects x,y,z (three numbers), got '") + bad + "'");
 
     EXPECT_EQ(osgVis::apps::splitList("a,,b,"), (std::vector<std::string>{"a", "", "b", ""}));
-    EXPECT_TRUE(osgVis::apps::parseOnOffValue("--x", "on"));
-    EXPECT_FALSE(osgVis::apps::parseOnOffValue("--x", "off"));
-    EXPECT_EQ(errorOf([&] { osgVis::apps::parseOnOffValue("--x", "yes"); }), "--x takes on or off, got 'yes'");
 }
 
 TEST(CommandLine, QuotesWhatAShellWouldSplit)

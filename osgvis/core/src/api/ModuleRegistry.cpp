@@ -3,6 +3,8 @@
 
 #include <osgVis/core/api/ModuleSettings.h>
 #include <osgVis/core/plugin/CallbackModule.h>
+
+#include "ModeText.h"
 #include <osgVis/core/plugin/PluginModules.h>
 
 #include <cstdlib>
@@ -34,27 +36,7 @@ Registry& registry()
     return r;
 }
 
-std::string joined(const std::vector<std::string>& names)
-{
-    std::string out;
-    for (const std::string& n : names)
-    {
-        if (!out.empty())
-            out += ", ";
-        out += n;
-    }
-    return out;
-}
-
-std::string trimmed(const std::string& s)
-{
-    const char* space = " \t\r\n";
-    const std::size_t first = s.find_first_not_of(space);
-    if (first == std::string::npos)
-        return {};
-    const std::size_t last = s.find_last_not_of(space);
-    return s.substr(first, last - first + 1);
-}
+using modetext::joined;
 } // namespace
 
 std::vector<std::string> moduleNames()
@@ -109,19 +91,12 @@ std::unique_ptr<VisibilityModule> createModule(const std::string& name)
 ModuleChain createChain(const std::string& names)
 {
     ModuleChain chain;
-    std::size_t start = 0;
-    while (true)
+    for (const std::string& name : modetext::split(names, ",+"))
     {
-        const std::size_t comma = names.find_first_of(",+", start);
-        const std::string name =
-            trimmed(names.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
         if (name.empty())
             throw UnknownModeError("empty mode name in '" + names + "' (known: " + joined(moduleNames()) + ")");
         // "octree:occluders=64": a built-in module with settings (ModuleSettings.h).
         chain.add(name.find(':') == std::string::npos ? createModule(name) : createModule(parseStageSettings(name)));
-        if (comma == std::string::npos)
-            break;
-        start = comma + 1;
     }
     return chain;
 }

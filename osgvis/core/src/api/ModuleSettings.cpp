@@ -4,6 +4,8 @@
 #include <osgVis/core/api/ModuleRegistry.h>
 #include <osgVis/core/frustum/FrustumModule.h>
 
+#include "ModeText.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -187,14 +189,6 @@ bool sameNamedPart(const CellPortalStage& a, const CellPortalStage& b)
     return a == b;
 }
 
-std::string keyList(const std::vector<std::string>& names)
-{
-    std::string out;
-    for (const std::string& name : names)
-        out += (out.empty() ? "" : ", ") + name;
-    return out;
-}
-
 template <class Options> void readKey(Options& options, const std::string& stage, const std::string& setting)
 {
     const std::size_t equals = setting.find('=');
@@ -213,7 +207,7 @@ template <class Options> void readKey(Options& options, const std::string& stage
     }
     if (keys.empty())
         throw UnknownModeError("mode '" + stage + "': this module takes no settings");
-    throw UnknownModeError("mode '" + stage + "': no setting '" + key + "' (settings: " + keyList(names) + ")");
+    throw UnknownModeError("mode '" + stage + "': no setting '" + key + "' (settings: " + modetext::joined(names) + ")");
 }
 
 StageSettings stage(const char* name, decltype(StageSettings::options) options = {})
@@ -221,12 +215,6 @@ StageSettings stage(const char* name, decltype(StageSettings::options) options =
     return StageSettings{name, std::move(options)};
 }
 
-std::string trimmed(const std::string& s)
-{
-    const char* space = " \t\r\n";
-    const std::size_t first = s.find_first_not_of(space);
-    return first == std::string::npos ? std::string() : s.substr(first, s.find_last_not_of(space) - first + 1);
-}
 } // namespace
 
 const std::vector<StageSettings>& builtInStages()
@@ -267,15 +255,7 @@ const std::vector<StageSettings>& builtInStages()
 
 StageSettings parseStageSettings(const std::string& text)
 {
-    std::vector<std::string> parts;
-    for (std::size_t start = 0;;)
-    {
-        const std::size_t colon = text.find(':', start);
-        parts.push_back(trimmed(text.substr(start, colon == std::string::npos ? std::string::npos : colon - start)));
-        if (colon == std::string::npos)
-            break;
-        start = colon + 1;
-    }
+    const std::vector<std::string> parts = modetext::split(text, ":");
     for (const StageSettings& known : builtInStages())
         if (known.name == parts[0])
         {
@@ -293,14 +273,8 @@ StageSettings parseStageSettings(const std::string& text)
 ChainSettings parseChainSettings(const std::string& text)
 {
     ChainSettings chain;
-    for (std::size_t start = 0;;)
-    {
-        const std::size_t separator = text.find_first_of(",+", start);
-        chain.push_back(parseStageSettings(text.substr(start, separator - start)));
-        if (separator == std::string::npos)
-            break;
-        start = separator + 1;
-    }
+    for (const std::string& stage : modetext::split(text, ",+"))
+        chain.push_back(parseStageSettings(stage));
     return chain;
 }
 
