@@ -116,6 +116,7 @@ TEST(MultifocalModule, AViewTakesItsCellsPvsAndKeepsItWhileTheEyeStaysInTheCell)
     EXPECT_EQ(cell.max, Vec3(88, 12, 2.5));
     MultifocalOptions volume = moduleVolumeOptions();
     volume.nearDistance = nearPlaneReach(view);
+    volume.minNearDistance = 0.5 * nearDistance(view); // a cell serves near planes down to half the view's
     EXPECT_EQ(visible, computeVolumePvs(city.scene, volumeOccluders(city.scene), cell, volume).objects);
     EXPECT_LT(visible.count(), city.scene.objects.size());
 
@@ -177,14 +178,16 @@ TEST(VolumeVisibility, AdversarialOccludersKeepEverythingTheRaysSee)
 }
 
 // Two baked view cells of `scene` along the city's street, their PVS objects first..first+9 for
-// each first in `firsts`: sets no computation would give.
+// each first in `firsts`: sets no computation would give. Baked for a near-plane reach of 0.38, so
+// that they serve the tests' views (near plane 0.1, reach 0.14) and regions (0.05, 0.35): a reach
+// no shorter than theirs, a near plane no nearer than an eighth of it (docs/multifocal.md).
 std::shared_ptr<BakedViewCells> twoBakedCells(const Scene& scene, std::uint64_t fingerprint,
                                               std::initializer_list<std::uint32_t> firsts)
 {
     auto baked = std::make_shared<BakedViewCells>();
     baked->fingerprint = fingerprint;
     baked->objectCount = std::uint32_t(scene.objects.size());
-    baked->nearDistance = 1.0;
+    baked->nearDistance = 0.38;
     baked->cells.totalCells = 2;
     baked->cells.cellIndices = {0, 1};
     baked->cells.cells = {Aabb(Vec3(84, 4, 0.7), Vec3(88, 8, 2.7)), Aabb(Vec3(84, 8, 0.7), Vec3(88, 12, 2.7))};
@@ -225,6 +228,7 @@ TEST(MultifocalModule, ARegionInsideBakedCellsTakesTheUnionOfTheirPvs)
     module.cullRegion(outside, computed);
     MultifocalOptions volume = moduleVolumeOptions();
     volume.nearDistance = outside.maxNearReach;
+    volume.minNearDistance = outside.minNearDistance;
     EXPECT_EQ(computed, computeVolumePvs(city.scene, volumeOccluders(city.scene), outside.eyes, volume).objects);
     // A baked view answers from its cell.
     VisibleSet view(city.scene.objects.size(), true);

@@ -4,6 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <sstream>
 
@@ -21,6 +22,22 @@ View lookFrom(const Vec3& eye, const Vec3& direction, const Vec3& up, double fov
 {
     return makeView(glm::lookAt(eye, eye + direction, up), perspective(fovy, double(width) / height), 0.0, width,
                     height);
+}
+
+View lookThroughCorner(const Vec3& eye, const Vec3& target, double fovy, std::uint32_t width, std::uint32_t height,
+                       double nearPlane, double fraction, std::uint32_t depthBits)
+{
+    const double aspect = double(width) / height, t = std::tan(glm::radians(fovy) / 2.0);
+    // The eye-space ray turned onto the direction of the target.
+    const Vec3 from = glm::normalize(Vec3(fraction * aspect * t, fraction * t, -1.0));
+    const Vec3 to = glm::normalize(target - eye);
+    const Vec3 axis = glm::cross(from, to);
+    const double angle = std::atan2(glm::length(axis), glm::dot(from, to));
+    const Mat4 eyeToWorld = glm::translate(Mat4(1.0), eye) * glm::rotate(Mat4(1.0), angle, glm::normalize(axis));
+    View view = makeView(glm::inverse(eyeToWorld), glm::perspective(glm::radians(fovy), aspect, nearPlane, 1000.0), 0.0,
+                         width, height);
+    view.depthBits = depthBits;
+    return view;
 }
 
 std::vector<View> cubeFaces(const Vec3& eye)

@@ -454,6 +454,73 @@ TEST(VisApi, HierarchyAttributeAndMeshMisuse)
     EXPECT_EQ(visibleIds(context.get()), std::vector<ObjectId>{0});
 }
 
+namespace
+{
+// What a module sees of the objects' flags (osgvis_scene_object), read by `flag-reader` at set_scene.
+std::vector<std::uint32_t> flagsSeen;
+
+osgvis_status readFlags(void*, const osgvis_scene* scene)
+{
+    flagsSeen.assign(osgvis_scene_object_count(scene), 0);
+    for (uint32_t id = 0; id < flagsSeen.size(); ++id)
+    {
+        osgvis_object_info info{};
+        if (osgvis_scene_object(scene, id, &info) != OSGVIS_OK)
+            return OSGVIS_ERROR_INTERNAL;
+        flagsSeen[id] = info.flags;
+    }
+    return OSGVIS_OK;
+}
+
+// A box object with its triangles and `extra` ones, handed through the C call.
+void addBoxObject(osgvis_context* context, const Vec3& lo, const Vec3& hi, uint32_t flags,
+                  const std::vector<Triangle>& extra = {})
+{
+    std::vector<Triangle> triangles = osgVis::test::boxTriangles(lo, hi);
+    triangles.insert(triangles.end(), extra.begin(), extra.end());
+    osgvis_object_desc desc{{}, {}, flags, uint32_t(triangles.size()), &triangles[0].a.x, nullptr};
+    copy(lo, desc.bounds_min);
+    copy(hi, desc.bounds_max);
+    ASSERT_EQ(osgvis_scene_add_object(context, &desc, nullptr), OSGVIS_OK) << osgvis_last_error();
+}
+} // namespace
+
+// Objects that no occluder may hide, behind a wall (docs/occluders.md): one with a sliver triangle
+// (three distinct corners on one line, as a fan over a face's corners has), which the C interface
+// flags as the OSG adapter does, when it is added and when it moves; and one the renderer flags
+// unoccludable (version 1.3 names both flags).
+TEST(VisApi, SliverAndUnoccludableObjectsAreNeverHiddenBehindAWall)
+{
+    static const osgvis_module_callbacks reader{
+        OSGVIS_VISAPI_VERSION, "flag-reader", 0, noState, noDestroy, readFlags, nullptr, keepAll, nullptr, nullptr};
+    ASSERT_EQ(osgvis_register_module("flag-reader", &reader, nullptr), OSGVIS_OK) << osgvis_last_error();
+    const std::vector<Triangle> sliver{{Vec3f(1.2f, 0, -10.5f), Vec3f(1.5f, 0, -10.5f), Vec3f(1.8f, 0, -10.5f)}};
+    for (const char* modes : {"frustum+octree", "frustum+mask", "frustum+cdt"})
+    {
+        Context context = newContext();
+        addBoxObject(context.get(), {-5, -5, -3.2}, {5, 5, -3}, 0);                                 // 0: the wall
+        addBoxObject(context.get(), {-0.5, -0.5, -11}, {0.5, 0.5, -10}, 0);                         // 1
+        addBoxObject(context.get(), {1, -0.5, -11}, {2, 0.5, -10}, 0, sliver);                      // 2
+        addBoxObject(context.get(), {-2, -0.5, -11}, {-1, 0.5, -10}, OSGVIS_OBJECT_UNOCCLUDABLE); // 3
+        addBoxObject(context.get(), {-0.5, 1, -11}, {0.5, 2, -10}, OSGVIS_OBJECT_CULL_BACK);        // 4
+        ASSERT_EQ(osgvis_context_set_mode(context.get(), "flag-reader"), OSGVIS_OK) << osgvis_last_error();
+        EXPECT_EQ(flagsSeen, (std::vector<std::uint32_t>{0, 0, OSGVIS_OBJECT_SLIVERS, OSGVIS_OBJECT_UNOCCLUDABLE,
+                                                         OSGVIS_OBJECT_CULL_BACK}));
+
+        ASSERT_EQ(osgvis_context_set_mode(context.get(), modes), OSGVIS_OK) << osgvis_last_error();
+        const osgvis_view_desc view = lookDownMinusZ();
+        ASSERT_EQ(osgvis_cull(context.get(), &view), OSGVIS_OK);
+        EXPECT_EQ(visibleIds(context.get()), (std::vector<ObjectId>{0, 2, 3})) << modes;
+
+        std::vector<Triangle> moved = osgVis::test::boxTriangles({-0.5, 1, -12}, {0.5, 2, -11});
+        moved.push_back({Vec3f(-0.3f, 1.5f, -11.5f), Vec3f(0.1f, 1.5f, -11.5f), Vec3f(0.3f, 1.5f, -11.5f)});
+        const double lo[3] = {-0.5, 1, -12}, hi[3] = {0.5, 2, -11};
+        ASSERT_EQ(osgvis_scene_move_object(context.get(), 4, lo, hi, &moved[0].a.x, uint32_t(moved.size())), OSGVIS_OK);
+        ASSERT_EQ(osgvis_cull(context.get(), &view), OSGVIS_OK);
+        EXPECT_EQ(visibleIds(context.get()), (std::vector<ObjectId>{0, 2, 3, 4})) << modes << ", moved";
+    }
+}
+
 // Version 1.2, the session a context culls through, as the OSG adapter's views do: with back-off on,
 // some frames skip the chain on its probing schedule (every object visible, said so), the others
 // answer exactly as the chain; off, every frame is the chain's.

@@ -28,7 +28,7 @@ extern "C" {
 /** The API version a program or module is compiled against: major changes break the ABI; a minor
  * one only adds. A host loads a module of the same major and a minor no newer than its own. */
 #define OSGVIS_VISAPI_VERSION_MAJOR 1
-#define OSGVIS_VISAPI_VERSION_MINOR 2
+#define OSGVIS_VISAPI_VERSION_MINOR 3
 #define OSGVIS_VISAPI_VERSION ((OSGVIS_VISAPI_VERSION_MAJOR << 16) | OSGVIS_VISAPI_VERSION_MINOR)
 
 /** Id of no object (an occluder without owner). */
@@ -47,7 +47,7 @@ typedef enum osgvis_status
     OSGVIS_ERROR_INTERNAL = 8 /**< an unexpected exception inside osgVis */
 } osgvis_status;
 
-/** Object flags (the values of osgVis::core::ObjectFlags). */
+/** Object flags (the values of osgVis::core::ObjectFlags, checked at compile time). */
 enum
 {
     OSGVIS_OBJECT_DYNAMIC = 1u << 0,
@@ -56,7 +56,15 @@ enum
     OSGVIS_OBJECT_ALWAYS_VISIBLE = 1u << 3,
     OSGVIS_OBJECT_NO_AUTO_OCCLUDER = 1u << 4,
     OSGVIS_OBJECT_CULL_BACK = 1u << 5,
-    OSGVIS_OBJECT_CULL_FRONT = 1u << 6
+    OSGVIS_OBJECT_CULL_FRONT = 1u << 6,
+    /** Version 1.3. Has a sliver triangle (distinct corners on one line up to float storage): its
+     * pixels may take any depth, so no occlusion hides it. osgvis_scene_add_object and
+     * osgvis_scene_move_object set it themselves when the triangles they are given have one. */
+    OSGVIS_OBJECT_SLIVERS = 1u << 7,
+    /** Version 1.3. Drawn without a depth test nearer geometry could fail (depth test off, a depth
+     * function other than LESS, LEQUAL or EQUAL, a depth range other than [0, 1]): no occlusion
+     * hides it. */
+    OSGVIS_OBJECT_UNOCCLUDABLE = 1u << 8
 };
 
 /** OSGVIS_VISAPI_VERSION of the library at run time. */

@@ -88,6 +88,7 @@ ViewRegion AsyncVisibility::regionAhead(const View& view) const
     }
     region.minNearDistance = NearDistanceFactor * nearDistance(view);
     region.maxNearReach = NearReachFactor * nearPlaneReach(view);
+    region.depthBits = view.depthBits;
     return region;
 }
 

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <unordered_map>
 
 namespace osgVis::core
@@ -375,10 +376,12 @@ void CdtModule::Impl::Frame::drawObject(ObjectId id, const Aabb* cell)
         bool inside = false;
         if (cell)
         {
+            // note: every point of the polygon lies within |far| of the eye, and whatever lies outside
+            // the cell is farther along its ray by at least the clearance (docs/cdt.md)
             const Vec3 far = glm::max(glm::abs(bounds.min - view.eye), glm::abs(bounds.max - view.eye));
-            // note: twice the separation along the axis covers rays up to 60 degrees off it
-            const Vec3 clearance(2.0 * m.grid.depthSeparation(glm::length(far)));
-            inside = cell->contains(bounds.min - clearance) && cell->contains(bounds.max + clearance);
+            const Vec3 clearance(m.grid.depthSeparation(glm::length(far)));
+            inside = std::isfinite(clearance.x) && cell->contains(bounds.min - clearance) &&
+                     cell->contains(bounds.max + clearance);
         }
         drawPolygon(index, inside ? cdt::CoverKind::DepthFree : cdt::CoverKind::DepthOnly);
     }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace osgVis::core
@@ -86,9 +87,11 @@ bool ScreenGrid::set(const View& view, double tolerancePixels)
     _lattice = std::max(1.0, upp / 64.0);
     _worldToClip = view.projectionMatrix * view.viewMatrix;
     _orthographic = view.orthographic;
+    // One step of the depth buffer: its range in w (NDC depth's 2, or at most 1/near) over 2^bits.
+    const double step = std::ldexp(1.0, -int(std::min<std::uint32_t>(view.depthBits, 64)));
     if (_orthographic)
     {
-        _depthMargin = 16.0 * 2.0 / double(1 << 24);
+        _depthMargin = 16.0 * 2.0 * step;
         _orthographicDepthScale = std::abs(view.projectionMatrix[2][2]);
     }
     else
@@ -96,13 +99,23 @@ bool ScreenGrid::set(const View& view, double tolerancePixels)
         const double n = nearDistance(view);
         if (!(n > 0.0) || !std::isfinite(n))
             return false;
-        _depthMargin = 16.0 / (n * double(1 << 24));
+        _depthMargin = 16.0 * step / n;
     }
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
             if (!std::isfinite(_worldToClip[c][r]))
                 return false;
     return true;
+}
+
+double ScreenGrid::depthSeparation(double distance) const
+{
+    if (_orthographic) // parallel rays: the gap along the ray is the gap in depth
+        return _depthMargin / std::max(_orthographicDepthScale, 1e-300);
+    // Points at s and s + g along a ray at angle θ to the axis differ in w by g / (s (s + g) cos θ):
+    // at least the margin m once g ≥ m s² cos θ / (1 - m s cos θ), which is largest on the axis.
+    const double reach = _depthMargin * distance;
+    return reach < 1.0 ? _depthMargin * distance * distance / (1.0 - reach) : std::numeric_limits<double>::infinity();
 }
 
 int ScreenGrid::sideOf(const Vec3& a, const Vec3& b, const Vec3& p) const

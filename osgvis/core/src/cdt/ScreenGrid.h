@@ -36,15 +36,14 @@ public:
     std::int32_t frameHalfHeight() const { return _halfH; }
     double tolerance() const { return _tolerance; }
     double unitsPerPixel() const { return _unitsPerPixel; }
-    /// Queried w must exceed a depth bound by this much to count as behind: the depth buffer's
-    /// resolution, uniform in w (1/z for a perspective view, NDC depth for an orthographic one).
+    /// Queried w must exceed a depth bound by this much to count as behind: 16 steps of the view's
+    /// depth buffer (View::depthBits), uniform in w (1/z for a perspective view, NDC depth for an
+    /// orthographic one).
     double depthMargin() const { return _depthMargin; }
-    /// World distance along the view axis that depthMargin() amounts to at view distance `distance`:
-    /// two surfaces closer than that along a ray may draw in either order.
-    double depthSeparation(double distance) const
-    {
-        return _orthographic ? _depthMargin / std::max(_orthographicDepthScale, 1e-300) : _depthMargin * distance * distance;
-    }
+    /// How far behind a point at most `distance` from the eye another point of the same ray must
+    /// lie for their w to differ by depthMargin(), whatever the ray's angle to the view axis
+    /// (docs/cdt.md, "Depth-free only clear of the cell's faces"); infinite where no gap does.
+    double depthSeparation(double distance) const;
 
     /// The box's outline on the grid (convex, dilated by τ, clipped to the frame grown by τ) and the
     /// largest nearness of its points. False when the box reaches the near plane (its projection

@@ -128,11 +128,12 @@ template <class Refine> void ModuleChain::runStages(VisibleSet& visible, const F
         const bool removed = o.id < _removed.size() && _removed[o.id];
         if (removed || o.id >= objects.size())
             continue;
-        // note: a sliver's pixels may take any depth, so no occluder hides it; the frustum still
-        // does (regions have no single frustum: kept)
-        const bool sliversInView =
-            (o.flags & sliverFlag) && (!frustum || frustum->classify(o.bounds) != Containment::Outside);
-        if ((o.flags & OBJECT_ALWAYS_VISIBLE) || sliversInView)
+        // note: a sliver's pixels may take any depth, and an unoccludable object passes its depth
+        // test wherever it lies, so no occluder hides either; the frustum still does (regions have
+        // no single frustum: kept)
+        const bool occlusionProof =
+            (o.flags & (sliverFlag | OBJECT_UNOCCLUDABLE)) && (!frustum || frustum->classify(o.bounds) != Containment::Outside);
+        if ((o.flags & OBJECT_ALWAYS_VISIBLE) || occlusionProof)
             visible.set(o.id);
     }
 }

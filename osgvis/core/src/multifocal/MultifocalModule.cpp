@@ -8,9 +8,11 @@
 #include <osgVis/core/module/BakedDataStore.h>
 #include <osgVis/core/scene/SceneFingerprint.h>
 
+#include <algorithm>
 #include <cmath>
 #include <list>
 #include <map>
+#include <optional>
 #include <tuple>
 
 namespace osgVis::core
@@ -19,11 +21,68 @@ namespace
 {
 using CellKey = std::tuple<long long, long long, long long>;
 
+// A cell is computed for near planes down to this fraction of the view's (the factor AsyncVisibility's
+// regions take), so that a near plane that shrinks as the eye nears geometry (OSG computes it every
+// frame) has the cell computed again only once it has halved.
+constexpr double NearPlaneSlack = 0.5;
+
 struct CellAnswer
 {
     VisibleSet objects;
-    double nearReach = 0.0; ///< the near-plane reach it assumed
+    MultifocalOptions computed; ///< the views it holds for: near-plane reach, nearest near plane, depth bits
 };
+
+// The volume options for views of near-plane reach `reach`, near plane at `nearest` (0: unknown)
+// and `bits` of depth: the module's, narrowed to those views.
+MultifocalOptions servedOptions(const MultifocalOptions& module, double reach, double nearest, std::uint32_t bits)
+{
+    MultifocalOptions options = module;
+    options.nearDistance = std::max(module.nearDistance, reach);
+    options.minNearDistance = module.minNearDistance > 0.0 ? std::min(module.minNearDistance, nearest) : nearest;
+    options.depthBits = std::min(module.depthBits, bits);
+    return options;
+}
+
+MultifocalOptions servedOptions(const MultifocalOptions& module, const View& view)
+{
+    return servedOptions(module, nearPlaneReach(view), nearDistance(view), view.depthBits);
+}
+
+MultifocalOptions servedOptions(const MultifocalOptions& module, const ViewRegion& region)
+{
+    return servedOptions(module, region.maxNearReach, region.minNearDistance, region.depthBits);
+}
+
+// What a bake assumed (osgvispvs: its near-plane reach, the default nearest plane and depth bits).
+MultifocalOptions bakedOptions(const BakedViewCells& baked)
+{
+    MultifocalOptions options;
+    options.nearDistance = baked.nearDistance;
+    return options;
+}
+
+// What a cell's new answer is computed for: the views `wanted` serves, with the slack above, and
+// every view the cell's last answer held for (a view alternating with another keeps one answer).
+MultifocalOptions widened(MultifocalOptions wanted, const std::optional<MultifocalOptions>& last)
+{
+    double nearest = nearestNearPlane(wanted);
+    if (last)
+    {
+        wanted.nearDistance = std::max(wanted.nearDistance, last->nearDistance);
+        wanted.depthBits = std::min(wanted.depthBits, last->depthBits);
+        nearest = std::min(nearest, nearestNearPlane(*last));
+    }
+    wanted.minNearDistance = NearPlaneSlack * nearest;
+    return wanted;
+}
+
+// True when an answer computed with `computed` holds for the views `wanted` serves: it used no
+// occluder their near plane could clip, and its depth margin is at least theirs.
+bool holdsFor(const MultifocalOptions& computed, const MultifocalOptions& wanted)
+{
+    return wanted.nearDistance <= computed.nearDistance &&
+           depthGapPerDistance2(wanted) <= depthGapPerDistance2(computed);
+}
 } // namespace
 
 void registerBakedViewCells(std::shared_ptr<const BakedViewCells> cells)
@@ -111,10 +170,11 @@ void MultifocalModule::cull(const View& view, VisibleSet& visible)
     if (!_scene || view.orthographic || !std::isfinite(view.eye.x + view.eye.y + view.eye.z))
         return;
     Impl& m = *_impl;
+    const MultifocalOptions wanted = servedOptions(m.options.volume, view);
     if (m.baked)
     {
         const std::uint32_t cell = m.baked->cells.locate(view.eye);
-        if (cell == NoCell || nearPlaneReach(view) > m.baked->nearDistance)
+        if (cell == NoCell || !holdsFor(bakedOptions(*m.baked), wanted))
             ++m.outsideBaked;
         else
             visible.intersectWith(m.baked->cells.pvs[cell]);
@@ -122,19 +182,21 @@ void MultifocalModule::cull(const View& view, VisibleSet& visible)
     }
     const Vec3 index = glm::floor((view.eye - m.options.cellOrigin) / m.cellSize);
     const CellKey key{(long long)index.x, (long long)index.y, (long long)index.z};
-    const double reach = nearPlaneReach(view);
     auto found = m.cells.find(key);
-    if (found != m.cells.end() && found->second.first.nearReach < reach)
+    // An answer for a nearer reach may hold occluders this view clips; one for a farther near plane
+    // (or more depth bits) has too fine a depth margin: the cell is computed again.
+    std::optional<MultifocalOptions> last;
+    if (found != m.cells.end() && !holdsFor(found->second.first.computed, wanted))
     {
+        last = found->second.first.computed;
         m.recent.erase(found->second.second);
         m.cells.erase(found);
         found = m.cells.end();
     }
     if (found == m.cells.end())
     {
-        MultifocalOptions volume = m.options.volume;
-        volume.nearDistance = std::max(volume.nearDistance, reach);
-        CellAnswer answer{computeVolumePvs(*_scene, m.occluders, cellOf(view.eye), volume).objects, volume.nearDistance};
+        const MultifocalOptions volume = widened(wanted, last);
+        CellAnswer answer{computeVolumePvs(*_scene, m.occluders, cellOf(view.eye), volume).objects, volume};
         ++m.computed;
         if (m.cells.size() >= std::max<std::size_t>(1, m.options.cachedCells))
         {
@@ -161,7 +223,8 @@ void MultifocalModule::cullRegionPass(const ViewRegion& region, VisibleSet& visi
         return;
     // A region inside baked cells takes the union of their PVS at once: each holds for every eye
     // in its cell, and every eye of the region lies in one of them.
-    if (const auto& baked = _impl->baked; baked && region.maxNearReach <= baked->nearDistance)
+    MultifocalOptions volume = servedOptions(_impl->options.volume, region);
+    if (const auto& baked = _impl->baked; baked && holdsFor(bakedOptions(*baked), volume))
     {
         std::vector<Aabb> boxes;
         std::vector<std::size_t> overlapping;
@@ -182,8 +245,6 @@ void MultifocalModule::cullRegionPass(const ViewRegion& region, VisibleSet& visi
             return;
         }
     }
-    MultifocalOptions volume = _impl->options.volume;
-    volume.nearDistance = std::max(volume.nearDistance, region.maxNearReach);
     if (pass == 0)
     {
         volume.planesPerDirection = std::min(volume.planesPerDirection, 3);

@@ -42,12 +42,10 @@ SquareCover squareCover(const ConvexArea2& square, const std::vector<HalfPlane2>
 }
 } // namespace
 
-void MultifocalZBuffer::reset(const CorrespondencePlane& plane, const Aabb& volume, double margin, double nearDistance)
+void MultifocalZBuffer::reset(const CorrespondencePlane& plane, const Aabb& volume, double margin,
+                              double depthGapPerDistance2)
 {
-    // A 24-bit depth buffer resolves z²/(near·2²⁴) along the view axis at distance z; eight steps,
-    // doubled for rays up to 60 degrees off the axis (a gap in h is at least the gap along the ray
-    // times the cosine to the axis): docs/multifocal.md, "Depth ties".
-    _depthGapPerDistance2 = nearDistance > 0.0 ? 2.0 * 8.0 / (nearDistance * double(1 << 24)) : 0.0;
+    _depthGapPerDistance2 = depthGapPerDistance2;
     _plane = plane;
     _corners = boxCorners(volume);
     _volumeMinH = std::numeric_limits<double>::infinity();

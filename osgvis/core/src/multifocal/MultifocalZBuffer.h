@@ -34,9 +34,10 @@ public:
 
     /// Clears the buffer for `plane` and the view volume `volume` (which must lie on P's positive
     /// side). `margin` (world units) is the slack every comparison keeps against rounding.
-    /// `nearDistance`: the nearest near plane of a view served (0: unknown), for the depth buffer's
-    /// resolution: a hidden point must lie that much behind its occluder or the two may tie.
-    void reset(const CorrespondencePlane& plane, const Aabb& volume, double margin, double nearDistance = 0.0);
+    /// `depthGapPerDistance2`: the depth buffer's resolution for the views served
+    /// (core::depthGapPerDistance2; 0: none): a hidden point must lie that much, times its squared
+    /// distance from V, behind its occluder in h, or the two may tie.
+    void reset(const CorrespondencePlane& plane, const Aabb& volume, double margin, double depthGapPerDistance2 = 0.0);
     const CorrespondencePlane& plane() const { return _plane; }
     /// Least h over V: geometry is testable, and may occlude, only where h is below it minus margin.
     double volumeMinH() const { return _volumeMinH; }

@@ -26,7 +26,25 @@ std::string MultifocalOptions::canonical() const
     s << "resolution=" << planeResolution << " planes=" << planesPerDirection << " angle=" << maxWindowAngle
       << " minAreaAngle=" << minAreaAngle << " maxOccluders=" << maxOccludersPerPlane << " near=" << nearDistance
       << " triangles=" << (triangles ? 1 : 0) << " fragments=" << maxFragmentsPerPixel;
+    // note: only where set, so that files baked before these options existed keep their identity
+    if (minNearDistance > 0.0)
+        s << " minNear=" << minNearDistance;
+    if (depthBits != 24)
+        s << " depthBits=" << depthBits;
     return s.str();
+}
+
+double nearestNearPlane(const MultifocalOptions& options)
+{
+    return options.minNearDistance > 0.0 ? options.minNearDistance : options.nearDistance / 8.0;
+}
+
+double depthGapPerDistance2(const MultifocalOptions& options)
+{
+    const double nearest = nearestNearPlane(options);
+    if (!(nearest > 0.0))
+        return 0.0;
+    return 8.0 / std::ldexp(nearest, int(std::min<std::uint32_t>(options.depthBits, 64)));
 }
 
 namespace
@@ -249,9 +267,7 @@ void cullBeyondFace(VolumeCulling& c, const VolumeFace& face)
             placePlane(face, c.volume, depth, c.candidateBounds, c.options.maxWindowAngle, c.options.planeResolution);
         if (plane.width <= 0)
             continue;
-        // note: nearDistance is the near plane's farthest reach; its distance along the
-        // axis is at least a quarter of it for any field of view up to 150 degrees
-        c.buffer.reset(plane, c.volume, c.margin, 0.25 * c.options.nearDistance);
+        c.buffer.reset(plane, c.volume, c.margin, depthGapPerDistance2(c.options));
         ++c.result.statistics.planes;
         c.result.statistics.occludersInserted += insertOccluders(c, usable);
         cullCandidates(c);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The renderer side of osgVis/visapi.h: a context holds a core Scene, the cull session (the module
 // chain the mode names, async and back-off as the OSG adapter's views have them), and the last
-// answer. Each call checks its arguments and runs behind the exception boundary.
+// answer. Each call checks its arguments and runs behind the exception boundary; an object handed
+// with a sliver triangle is flagged here, as the OSG adapter flags its own.
 #include <osgVis/visapi.h>
 
 #include "CallbackHierarchy.h"
@@ -30,6 +31,22 @@ struct osgvis_context
     bool answered = false;
     double cullMilliseconds = 0.0;
 };
+
+// A renderer's flags go into the core unchanged: the C list must be the core's, bit for bit, and
+// hold every core flag.
+static_assert(OSGVIS_OBJECT_DYNAMIC == std::uint32_t(OBJECT_DYNAMIC), "OSGVIS_OBJECT_DYNAMIC");
+static_assert(OSGVIS_OBJECT_OCCLUDER == std::uint32_t(OBJECT_OCCLUDER), "OSGVIS_OBJECT_OCCLUDER");
+static_assert(OSGVIS_OBJECT_TRANSPARENT == std::uint32_t(OBJECT_TRANSPARENT), "OSGVIS_OBJECT_TRANSPARENT");
+static_assert(OSGVIS_OBJECT_ALWAYS_VISIBLE == std::uint32_t(OBJECT_ALWAYS_VISIBLE), "OSGVIS_OBJECT_ALWAYS_VISIBLE");
+static_assert(OSGVIS_OBJECT_NO_AUTO_OCCLUDER == std::uint32_t(OBJECT_NO_AUTO_OCCLUDER), "OSGVIS_OBJECT_NO_AUTO_OCCLUDER");
+static_assert(OSGVIS_OBJECT_CULL_BACK == std::uint32_t(OBJECT_CULL_BACK), "OSGVIS_OBJECT_CULL_BACK");
+static_assert(OSGVIS_OBJECT_CULL_FRONT == std::uint32_t(OBJECT_CULL_FRONT), "OSGVIS_OBJECT_CULL_FRONT");
+static_assert(OSGVIS_OBJECT_SLIVERS == std::uint32_t(OBJECT_SLIVERS), "OSGVIS_OBJECT_SLIVERS");
+static_assert(OSGVIS_OBJECT_UNOCCLUDABLE == std::uint32_t(OBJECT_UNOCCLUDABLE), "OSGVIS_OBJECT_UNOCCLUDABLE");
+static_assert((OSGVIS_OBJECT_DYNAMIC | OSGVIS_OBJECT_OCCLUDER | OSGVIS_OBJECT_TRANSPARENT | OSGVIS_OBJECT_ALWAYS_VISIBLE |
+               OSGVIS_OBJECT_NO_AUTO_OCCLUDER | OSGVIS_OBJECT_CULL_BACK | OSGVIS_OBJECT_CULL_FRONT |
+               OSGVIS_OBJECT_SLIVERS | OSGVIS_OBJECT_UNOCCLUDABLE) == OBJECT_ALL_FLAGS,
+              "a core ObjectFlags bit has no OSGVIS_OBJECT_* in osgVis/visapi.h");
 
 namespace
 {
@@ -73,6 +90,16 @@ std::uint32_t appendTriangles(Scene& scene, const float* triangles, std::uint32_
         scene.triangles.push_back({Vec3f(f[0], f[1], f[2]), Vec3f(f[3], f[4], f[5]), Vec3f(f[6], f[7], f[8])});
     }
     return first;
+}
+
+// Appends the object's new triangles and points it at them. A sliver among them flags the object,
+// as the OSG adapter does; nothing unflags it (the renderer may have flagged it itself).
+void storeTriangles(Scene& scene, SceneObject& object, const float* triangles, std::uint32_t count)
+{
+    object.firstTriangle = appendTriangles(scene, triangles, count);
+    object.triangleCount = count;
+    if (hasSliverTriangle(scene.triangles.data() + object.firstTriangle, count))
+        object.flags |= OBJECT_SLIVERS;
 }
 
 // Non-finite bounds make the object one no module may cull, as the OSG adapter does.
@@ -174,7 +201,7 @@ osgvis_status osgvis_scene_add_object(osgvis_context* context, const osgvis_obje
                        SceneObject& o = scene.objects[added];
                        setBounds(o, {vec3(object->bounds_min), vec3(object->bounds_max)});
                        if (object->triangles)
-                           o.firstTriangle = appendTriangles(scene, object->triangles, object->triangle_count);
+                           storeTriangles(scene, o, object->triangles, object->triangle_count);
                        else
                            o.firstTriangle = static_cast<std::uint32_t>(scene.triangles.size()); // note: kept none
                        if (id)
@@ -237,12 +264,9 @@ osgvis_status osgvis_scene_move_object(osgvis_context* context, uint32_t id, con
                        requireObject(*context, id);
                        SceneObject& o = context->scene.objects[id];
                        setBounds(o, {vec3(bounds_min), vec3(bounds_max)});
+                       // note: the old triangles stay in the array, unreferenced, so no other object's range moves.
                        if (triangles)
-                       {
-                           // note: the old triangles stay in the array, unreferenced, so no other object's range moves.
-                           o.firstTriangle = appendTriangles(context->scene, triangles, triangle_count);
-                           o.triangleCount = triangle_count;
-                       }
+                           storeTriangles(context->scene, o, triangles, triangle_count);
                        notify(*context, SceneChange::Kind::Moved, id);
                    });
 }

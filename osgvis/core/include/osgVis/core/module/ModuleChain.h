@@ -39,8 +39,8 @@ public:
     /// Removed objects are remembered as with sceneChanged.
     void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes);
     /// Starts from every object of the scene (less those reported Removed) and lets each stage refine;
-    /// finally re-adds objects flagged OBJECT_ALWAYS_VISIBLE, and those flagged OBJECT_SLIVERS that
-    /// are not outside the view frustum (every one, for regions). Never culls a visible object unless one
+    /// finally re-adds objects flagged OBJECT_ALWAYS_VISIBLE, and those flagged OBJECT_SLIVERS or
+    /// OBJECT_UNOCCLUDABLE that are not outside the view frustum (every one, for regions). Never culls a visible object unless one
     /// of the stages is approximate.
     void cull(const View& view, VisibleSet& visible);
     const std::vector<StageTiming>& lastTimings() const { return _timings; }

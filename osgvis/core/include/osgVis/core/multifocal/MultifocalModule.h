@@ -5,11 +5,15 @@
 /// cell gives the answer, so every view of an eye in the cell keeps everything visible from
 /// anywhere in it. With baked view cells registered for the scene (a `.pvs` file of
 /// `osgvispvs --method multifocal`, read by the .pvs plugin) the cell is the baked one holding the
-/// eye, and an eye outside every cell keeps everything. Without, cells form a grid
-/// (MultifocalModuleOptions::cellSize) whose PVS are computed by computeVolumePvs as the eye
-/// enters them and kept while it stays. Region queries (cullRegion, and with it AsyncVisibility)
-/// take the union of the baked cells' PVS when the region's box lies inside baked cells, else
-/// compute the PVS of the region's own box. Orthographic views keep everything.
+/// eye, and an eye outside every cell, or a view whose depth margin the bake does not hold, keeps
+/// everything. Without, cells form a grid (MultifocalModuleOptions::cellSize) whose PVS are
+/// computed by computeVolumePvs as the eye enters them and kept while it stays, for the views whose
+/// depth margin they hold (a near-plane reach no farther, a near plane no nearer than half the one
+/// computed for, as many depth bits: docs/multifocal.md, "Depth ties"); another view has its cell
+/// computed again, for it and the views before. Region queries (cullRegion, and with it
+/// AsyncVisibility) take the union of the baked cells' PVS when the region's box lies inside baked
+/// cells and the bake's margin holds for it, else compute the PVS of the region's own box.
+/// Orthographic views keep everything.
 #include <osgVis/core/module/VisibilityModule.h>
 #include <osgVis/core/multifocal/VolumeVisibility.h>
 #include <osgVis/core/pvs/ViewCellPvs.h>

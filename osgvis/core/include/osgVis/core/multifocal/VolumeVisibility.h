@@ -28,8 +28,15 @@ struct MultifocalOptions
     double minAreaAngle = 1e-6;
     /// At most this many occluders are inserted per plane (the best by area-angle).
     std::uint32_t maxOccludersPerPlane = 50000;
-    /// No occluder nearer to V than this is used: a near plane at that distance could clip it.
+    /// No occluder nearer to V than this is used: a near plane at that distance could clip it. The
+    /// farthest reach of the near plane (a corner of its rectangle) of a view served.
     double nearDistance = 0.0;
+    /// The nearest near plane, along its view axis, of a view served, and the bits of its depth
+    /// buffer: what a hidden point must lie behind its occluder by, lest the two tie in depth
+    /// (depthGapPerDistance2). 0: nearDistance / 8, which a view reaching nearDistance has when its
+    /// widest ray (to a corner of the near rectangle) is at most 82.8° off its axis.
+    double minNearDistance = 0.0;
+    std::uint32_t depthBits = 24;
     /// Test the triangles of objects whose bounds are not hidden: an object all of whose
     /// triangles are hidden is culled, and the statistics count hidden triangles.
     bool triangles = true;
@@ -58,6 +65,13 @@ struct VolumePvs
     std::vector<std::uint8_t> hiddenTriangles; ///< per Scene::triangles entry, 1 = culled; empty unless triangles
     VolumeStatistics statistics;
 };
+
+/// The nearest near plane of a view `options` serves: minNearDistance, else nearDistance / 8.
+double nearestNearPlane(const MultifocalOptions& options);
+/// The gap in h, per squared distance from V, that a point must lie behind its occluder for the
+/// views `options` serves to draw the occluder in front (eight steps of their depth buffer at
+/// nearestNearPlane: docs/multifocal.md, "Depth ties"); 0 when no near plane is known.
+double depthGapPerDistance2(const MultifocalOptions& options);
 
 /// The occluders a volume PVS uses: the scene's polygons (buildOccluderPolygons) and the sections
 /// through its closed convex objects (convexSolidSections).

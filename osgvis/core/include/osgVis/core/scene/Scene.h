@@ -27,6 +27,14 @@ struct Triangle
     Vec3f a, b, c;
 };
 
+/// A sliver: three distinct corners on one line up to their float storage (height below 10⁻⁶ of
+/// the longest edge plus eight float epsilons of the largest coordinate magnitude), whose pixels
+/// the rasterizer may give any depth (docs/occluders.md, "Sliver triangles"). A triangle with a
+/// repeated corner is none: it draws nothing.
+bool isSliverTriangle(const Triangle& triangle);
+/// True when one of the `count` triangles at `triangles` is a sliver: their object is OBJECT_SLIVERS.
+bool hasSliverTriangle(const Triangle* triangles, std::size_t count);
+
 enum ObjectFlags : std::uint32_t
 {
     OBJECT_NONE = 0,
@@ -51,7 +59,19 @@ enum ObjectFlags : std::uint32_t
     /// show through whatever stands in front (docs/occluders.md, "Sliver triangles"). No module's
     /// occlusion may hide it; ModuleChain keeps it wherever the view frustum may hold it.
     OBJECT_SLIVERS = 1u << 7,
+    /// Drawn without a depth test that nearer geometry could fail (depth test off, a depth function
+    /// other than LESS, LEQUAL or EQUAL, a depth range other than [0, 1]: markers, labels, x-ray
+    /// highlights): no occlusion may hide it, whatever stands in front; ModuleChain keeps it wherever
+    /// the view frustum may hold it.
+    OBJECT_UNOCCLUDABLE = 1u << 8,
 };
+
+/// Every ObjectFlags bit. The C interface checks its OSGVIS_OBJECT_* list against this one
+/// (static_asserts in src/visapi/RendererCalls.cpp): a flag added above goes in here and in
+/// osgVis/visapi.h too.
+constexpr std::uint32_t OBJECT_ALL_FLAGS = OBJECT_DYNAMIC | OBJECT_OCCLUDER | OBJECT_TRANSPARENT |
+                                           OBJECT_ALWAYS_VISIBLE | OBJECT_NO_AUTO_OCCLUDER | OBJECT_CULL_BACK |
+                                           OBJECT_CULL_FRONT | OBJECT_SLIVERS | OBJECT_UNOCCLUDABLE;
 
 struct SceneObject
 {

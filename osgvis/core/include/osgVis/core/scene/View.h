@@ -17,6 +17,9 @@ struct View
     double time = 0.0;          ///< walk time in seconds (never the wall clock)
     std::uint32_t viewportWidth = 1280, viewportHeight = 1024;
     bool orthographic = false;
+    /// Bits of the depth buffer the view draws into: depth-tie margins (cdt, multifocal) take the
+    /// resolution from it (docs/cdt.md, docs/multifocal.md); the OSG adapter sets it from the context.
+    std::uint32_t depthBits = 24;
 };
 
 /// Fills eye, frustum and orthographic from the two matrices.
