@@ -165,7 +165,7 @@ TEST(TreeCull, BakedDataSetOnTheGroupReachTheViewsChain)
     auto cells = std::make_shared<osgVis::core::BakedViewCells>();
     cells->fingerprint = osgVis::core::sceneFingerprint(extracted->scene);
     cells->objectCount = std::uint32_t(extracted->scene.objects.size());
-    cells->nearDistance = 10.0;
+    cells->nearDistance = 1.0; // a bake reaching 1 serves views with a near plane from 1/8 (docs/multifocal.md)
     cells->cells.totalCells = 1;
     cells->cells.cellIndices = {0};
     cells->cells.cells = {osgVis::core::Aabb(osgVis::core::Vec3(-1.0), osgVis::core::Vec3(1.0))};

@@ -9,7 +9,9 @@
 #include <osgVis/ViewCuller>
 #include <osgVis/VisibilityGroup>
 
+#include <osg/FrameStamp>
 #include <osg/Geode>
+#include <osg/MatrixTransform>
 
 #include <gtest/gtest.h>
 
@@ -106,4 +108,37 @@ TEST(ViewCuller, BackOffProbesTheRendererAloneOnItsSchedule)
         const std::vector<unsigned> probe{56, 57, 58, 59, 60, 61, 62, 63}; // the 8th block of 8
         EXPECT_EQ(skipped, on ? probe : std::vector<unsigned>{});
     }
+}
+
+// An application may change the graph between two culls of one frame: a second camera culled after a
+// first one's cull callback moved something, or two culls with one frame stamp. Each cull compares
+// the watch, so the second sees the box moved into its view (it used to compare once per frame
+// number and cull the box where it had been).
+TEST(ViewCuller, AChangeBetweenTwoCullsOfOneFrameIsSeen)
+{
+    osg::ref_ptr<osgVis::VisibilityGroup> group = new osgVis::VisibilityGroup("frustum");
+    osg::ref_ptr<osg::MatrixTransform> mover = new osg::MatrixTransform;
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(makeBox(osg::Vec3(-11, -1, -1), osg::Vec3(-9, 1, 1))); // in A's view, behind B
+    mover->addChild(geode);
+    group->addChild(mover);
+    const osg::Matrixd projection = osg::Matrixd::perspective(40.0, 1.0, 0.5, 100.0);
+
+    osg::ref_ptr<osg::FrameStamp> frameStamp = new osg::FrameStamp;
+    frameStamp->setFrameNumber(7);
+    osg::ref_ptr<osgUtil::CullVisitor> viewA = new osgUtil::CullVisitor;
+    osg::ref_ptr<osgUtil::CullVisitor> viewB = new osgUtil::CullVisitor;
+    for (osgUtil::CullVisitor* view : {viewA.get(), viewB.get()})
+    {
+        view->setIdentifier(new osgUtil::CullVisitor::Identifier);
+        view->setFrameStamp(frameStamp.get());
+    }
+    osgVis::ViewCuller& culler = *group->getViewCuller();
+    EXPECT_EQ(culler.cull(*viewA, *group, lookingAlongX(-1), projection).visible->count(), 1u);
+    EXPECT_EQ(culler.cull(*viewB, *group, lookingAlongX(+1), projection).visible->count(), 0u);
+
+    mover->setMatrix(osg::Matrixd::translate(20, 0, 0)); // as A's cull callback would: now ahead of B
+    EXPECT_EQ(culler.cull(*viewB, *group, lookingAlongX(+1), projection).visible->count(), 1u)
+        << "the same frame's second cull must see the box moved into its view";
+    EXPECT_EQ(culler.cull(*viewA, *group, lookingAlongX(-1), projection).visible->count(), 0u);
 }

@@ -10,6 +10,7 @@
 #include <osgVis/Occluder>
 #include <osgVis/Portal>
 
+#include <osg/ColorMask>
 #include <osg/CullFace>
 #include <osg/Depth>
 #include <osg/Drawable>
@@ -17,6 +18,7 @@
 #include <osg/Geode>
 #include <osg/LOD>
 #include <osg/MatrixTransform>
+#include <osg/Multisample>
 #include <osg/PagedLOD>
 #include <osg/PolygonMode>
 #include <osg/PositionAttitudeTransform>
@@ -54,8 +56,8 @@ template <class Value> struct Inherited
 
 struct DrawnState
 {
-    Inherited<bool> cullFace, alphaTest, depthTest, stencilTest, clipPlane;
-    Inherited<const osg::StateAttribute*> cullFaceMode, frontFace, polygonMode, depth, program;
+    Inherited<bool> cullFace, alphaTest, alphaToCoverage, blend, depthTest, stencilTest, scissorTest, clipPlane;
+    Inherited<const osg::StateAttribute*> cullFaceMode, frontFace, polygonMode, depth, program, colorMask;
 
     void applyMode(Inherited<bool>& mode, const osg::StateSet& ss, GLenum gl)
     {
@@ -75,8 +77,11 @@ struct DrawnState
     {
         applyMode(cullFace, ss, GL_CULL_FACE);
         applyMode(alphaTest, ss, GL_ALPHA_TEST);
+        applyMode(alphaToCoverage, ss, GL_SAMPLE_ALPHA_TO_COVERAGE_ARB);
+        applyMode(blend, ss, GL_BLEND);
         applyMode(depthTest, ss, GL_DEPTH_TEST);
         applyMode(stencilTest, ss, GL_STENCIL_TEST);
+        applyMode(scissorTest, ss, GL_SCISSOR_TEST);
         for (GLenum plane = GL_CLIP_PLANE0; plane <= GL_CLIP_PLANE5; ++plane)
         {
             const osg::StateAttribute::GLModeValue v = ss.getMode(plane);
@@ -88,6 +93,7 @@ struct DrawnState
         applyAttribute(polygonMode, ss, osg::StateAttribute::POLYGONMODE);
         applyAttribute(depth, ss, osg::StateAttribute::DEPTH);
         applyAttribute(program, ss, osg::StateAttribute::PROGRAM);
+        applyAttribute(colorMask, ss, osg::StateAttribute::COLORMASK);
     }
 };
 
@@ -152,6 +158,50 @@ bool writesDepthNormally(const osg::StateAttribute* attribute)
     return depth->getWriteMask() && depth->getZNear() == 0.0 && depth->getZFar() == 1.0 &&
            (f == osg::Depth::LESS || f == osg::Depth::LEQUAL);
 }
+
+// note: an occluder drawn after what it hides (a later bin) hides it only by painting over it
+bool writesEveryColour(const osg::StateAttribute* attribute)
+{
+    const auto* mask = static_cast<const osg::ColorMask*>(attribute);
+    return !mask || (mask->getRedMask() && mask->getGreenMask() && mask->getBlueMask() && mask->getAlphaMask());
+}
+
+// Why triangles drawn with `state` may hide nothing, or null. A shader may discard or move fragments,
+// an alpha test or alpha-to-coverage punches holes, clip planes, the scissor and the stencil cut
+// pixels away: none of them may hide anything on our word.
+const char* whyStateHidesNothing(const DrawnState& state)
+{
+    const std::pair<bool, const char*> rules[] = {
+        {!(state.alphaTest.set && state.alphaTest.value), "alpha test"},
+        {!(state.alphaToCoverage.set && state.alphaToCoverage.value), "alpha to coverage"},
+        {!(state.blend.set && state.blend.value), "blending"},
+        {!(state.stencilTest.set && state.stencilTest.value), "stencil test"},
+        {!(state.scissorTest.set && state.scissorTest.value), "scissor test"},
+        {!state.clipPlane.set, "clip plane"},
+        {!(state.depthTest.set && !state.depthTest.value), "depth test off"},
+        {fillsBothSides(state.polygonMode.value), "polygon mode lines or points"},
+        {writesDepthNormally(state.depth.value), "no depth write, or a depth range or function that is not the usual"},
+        {writesEveryColour(state.colorMask.value), "a colour mask (drawn later, it would not paint over what it hides)"},
+        {!state.program.value, "a shader program (it may discard or move fragments)"}};
+    for (const auto& [holds, why] : rules)
+        if (!holds)
+            return why;
+    return nullptr;
+}
+
+// Whether nearer geometry can make this state's depth test fail: the test on, a function that passes
+// only for a nearer or equal depth, and the usual depth range.
+bool occludable(const DrawnState& state)
+{
+    if (state.depthTest.set && !state.depthTest.value)
+        return false;
+    const auto* depth = static_cast<const osg::Depth*>(state.depth.value);
+    if (!depth)
+        return true;
+    const osg::Depth::Function f = depth->getFunction();
+    return depth->getZNear() == 0.0 && depth->getZFar() == 1.0 &&
+           (f == osg::Depth::LESS || f == osg::Depth::LEQUAL || f == osg::Depth::EQUAL);
+}
 } // namespace
 
 OccluderEligibility occluderEligibility(const osg::NodePath& path)
@@ -166,24 +216,15 @@ OccluderEligibility occluderEligibility(const osg::NodePath& path)
             state.apply(*ss);
     }
 
-    // note: a shader may discard or move fragments, an alpha test punches holes, clip planes and
-    // the stencil cut pixels away: none of them may hide anything on our word.
-    const std::pair<bool, const char*> rules[] = {
-        {everyFrame, "under a node that may not draw it every frame (LOD, Switch, a cull or draw callback)"},
-        {!(state.alphaTest.set && state.alphaTest.value), "alpha test"},
-        {!(state.stencilTest.set && state.stencilTest.value), "stencil test"},
-        {!state.clipPlane.set, "clip plane"},
-        {!(state.depthTest.set && !state.depthTest.value), "depth test off"},
-        {fillsBothSides(state.polygonMode.value), "polygon mode lines or points"},
-        {writesDepthNormally(state.depth.value), "no depth write, or a depth range or function that is not the usual"},
-        {!state.program.value, "a shader program (it may discard or move fragments)"}};
-    for (const auto& [holds, why] : rules)
-        if (!holds)
-        {
-            out.flags |= core::OBJECT_NO_AUTO_OCCLUDER;
-            out.notOccluderBecause = why;
-            break;
-        }
+    out.notOccluderBecause =
+        everyFrame ? whyStateHidesNothing(state)
+                   : "under a node that may not draw it every frame (LOD, Switch, a cull or draw callback)";
+    if (out.notOccluderBecause)
+        out.flags |= core::OBJECT_NO_AUTO_OCCLUDER;
+    // note: a draw callback draws what it likes, the depth test off included
+    const osg::Drawable* drawable = path.empty() ? nullptr : path.back()->asDrawable();
+    if (!occludable(state) || (drawable && drawable->getDrawCallback()))
+        out.flags |= core::OBJECT_UNOCCLUDABLE;
 
     if (const auto* front = static_cast<const osg::FrontFace*>(state.frontFace.value))
         out.clockwiseFront = front->getMode() == osg::FrontFace::CLOCKWISE;
@@ -199,13 +240,22 @@ OccluderEligibility occluderEligibility(const osg::NodePath& path)
     return out;
 }
 
+InheritedStateRules inheritedStateRules(const std::vector<const osg::StateSet*>& stateSets)
+{
+    DrawnState state;
+    for (const osg::StateSet* ss : stateSets)
+        if (ss)
+            state.apply(*ss);
+    return {whyStateHidesNothing(state), occludable(state)};
+}
+
 // note: reads every value DrawnState, the rules above and the extractor's transparency test read, so
 // that a state set edited in place changes the key (docs/changes.md).
 std::uint64_t drawnStateKey(const osg::StateSet& ss)
 {
     ValueHash key;
-    for (GLenum mode : {GLenum(GL_CULL_FACE), GLenum(GL_ALPHA_TEST), GLenum(GL_DEPTH_TEST), GLenum(GL_STENCIL_TEST),
-                        GLenum(GL_BLEND)})
+    for (GLenum mode : {GLenum(GL_CULL_FACE), GLenum(GL_ALPHA_TEST), GLenum(GL_SAMPLE_ALPHA_TO_COVERAGE_ARB),
+                        GLenum(GL_DEPTH_TEST), GLenum(GL_STENCIL_TEST), GLenum(GL_SCISSOR_TEST), GLenum(GL_BLEND)})
         key.mix(ss.getMode(mode));
     for (GLenum plane = GL_CLIP_PLANE0; plane <= GL_CLIP_PLANE5; ++plane)
         key.mix(ss.getMode(plane));
@@ -233,6 +283,9 @@ std::uint64_t drawnStateKey(const osg::StateSet& ss)
         key.mixDouble(depth->getZNear());
         key.mixDouble(depth->getZFar());
     }
+    if (const auto* mask = static_cast<const osg::ColorMask*>(attribute(osg::StateAttribute::COLORMASK)))
+        key.mix((mask->getRedMask() ? 1u : 0u) | (mask->getGreenMask() ? 2u : 0u) | (mask->getBlueMask() ? 4u : 0u) |
+                (mask->getAlphaMask() ? 8u : 0u));
     attribute(osg::StateAttribute::PROGRAM);
     return key.value;
 }

@@ -25,6 +25,7 @@ osg::ref_ptr<ExtractedScene> copyOf(const ExtractedScene& previous)
     out->pagedNodes = previous.pagedNodes;
     out->oversizedTiles = previous.oversizedTiles;
     out->clusteredDrawables = previous.clusteredDrawables;
+    out->occluderMasks = previous.occluderMasks;
     for (core::ObjectId id = 0; id < out->scene.objects.size(); ++id)
         out->indexObject(id);
     return out;

@@ -138,6 +138,7 @@ osg::ref_ptr<ExtractedScene> reextractScene(osg::Node& root, const ExtractedScen
             occluder.owner = stableId[occluder.owner];
 
     out->oversizedTiles = std::move(fresh->oversizedTiles);
+    out->occluderMasks = std::move(fresh->occluderMasks);
     for (const PagedNodeRecord& record : fresh->pagedNodes)
         out->pagedNodes.push_back({stableId[record.placeholder], record.children, record.childNodes});
 

@@ -240,17 +240,7 @@ struct SliverFinder
 
     void operator()(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c)
     {
-        if (found || a == b || b == c || c == a)
-            return;
-        const osg::Vec3d ab = osg::Vec3d(b) - osg::Vec3d(a), ac = osg::Vec3d(c) - osg::Vec3d(a);
-        const osg::Vec3d bc = osg::Vec3d(c) - osg::Vec3d(b);
-        const double longest = std::sqrt(std::max({ab.length2(), ac.length2(), bc.length2()}));
-        double largest = 0.0;
-        for (const osg::Vec3& v : {a, b, c})
-            largest = std::max({largest, double(std::abs(v.x())), double(std::abs(v.y())), double(std::abs(v.z()))});
-        const double height = (ab ^ ac).length() / longest;
-        found = std::isfinite(longest) &&
-                height < 1e-6 * longest + 8.0 * double(std::numeric_limits<float>::epsilon()) * largest;
+        found = found || core::isSliverTriangle({{a.x(), a.y(), a.z()}, {b.x(), b.y(), b.z()}, {c.x(), c.y(), c.z()}});
     }
 };
 
@@ -456,16 +446,23 @@ public:
 
 private:
     // The cull traversal places this node's subtree in a way extraction cannot know: screen-aligned,
-    // in an absolute frame, under its own projection or camera.
+    // in an absolute frame, under its own projection or camera, or by a matrix a Transform of a type
+    // the kit does not know computes from the cull visitor (an eye-following sky). OSG never culls a
+    // culling-inactive node by its bound: neither may a module.
     bool placedOnlyAtCull(const osg::Node& node) const
     {
+        if (!node.getCullingActive())
+            return true;
         if (dynamic_cast<const osg::Billboard*>(&node) || dynamic_cast<const osg::Projection*>(&node) ||
             dynamic_cast<const osg::AutoTransform*>(&node))
             return true;
         if (dynamic_cast<const osg::Camera*>(&node))
             return &node != _root;
         const osg::Transform* transform = node.asTransform();
-        return transform && transform->getReferenceFrame() != osg::Transform::RELATIVE_RF;
+        if (!transform)
+            return false;
+        return transform->getReferenceFrame() != osg::Transform::RELATIVE_RF ||
+               (!transform->asMatrixTransform() && !transform->asPositionAttitudeTransform());
     }
 
     // `unpredictable`: the cull traversal places this node's subtree in a way extraction cannot know
@@ -566,12 +563,30 @@ private:
 
     osg::Matrixd localToRoot() const { return osg::computeLocalToWorld(_nodePath); }
 
+    static bool mayOcclude(std::uint32_t flags)
+    {
+        constexpr std::uint32_t never = core::OBJECT_DYNAMIC | core::OBJECT_TRANSPARENT | core::OBJECT_ALWAYS_VISIBLE;
+        return !(flags & never) && (!(flags & core::OBJECT_NO_AUTO_OCCLUDER) || (flags & core::OBJECT_OCCLUDER));
+    }
+
+    // The masks a view's traversal mask must meet to draw what lies at the end of the current path.
+    void noteOccluderMasks()
+    {
+        std::vector<osg::Node::NodeMask>& masks = _out.occluderMasks;
+        for (const osg::Node* node : _nodePath)
+        {
+            const osg::Node::NodeMask mask = node->getNodeMask();
+            if (mask != ~osg::Node::NodeMask(0) && std::find(masks.begin(), masks.end(), mask) == masks.end())
+                masks.push_back(mask);
+        }
+    }
+
     void addObject(osg::Drawable& drawable)
     {
         ObjectRef ref{&drawable, _nodePath, localToRoot(), nullptr, 0, nullptr};
 
         std::uint32_t flags = core::OBJECT_NONE;
-        if (_unpredictableDepth > 0)
+        if (_unpredictableDepth > 0 || placedOnlyAtCull(drawable))
             flags |= core::OBJECT_ALWAYS_VISIBLE;
         if (_occluderDepth > 0)
             flags |= core::OBJECT_OCCLUDER;
@@ -587,6 +602,8 @@ private:
         flags |= eligibility.flags;
         if (hasSlivers(drawable))
             flags |= core::OBJECT_SLIVERS;
+        if (mayOcclude(flags))
+            noteOccluderMasks();
 
         if (const ClusterLayout* layout = layoutFor(drawable))
             if (addClusters(drawable, ref, flags, *layout, eligibility.clockwiseFront))
@@ -710,6 +727,8 @@ private:
         const osg::Matrixd world = localToRoot();
         for (const Occluder::Polygon& polygon : occluder.getPolygons())
             _out.scene.occluders.push_back({toWorldPolygon(polygon, world), core::InvalidObject});
+        if (!occluder.getPolygons().empty())
+            noteOccluderMasks();
     }
 
     void addCell(const Cell& cell)

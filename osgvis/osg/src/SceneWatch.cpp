@@ -180,6 +180,8 @@ private:
                                     node.getStateSet() ? drawnStateKey(*node.getStateSet()) : SceneWatch::NoState,
                                     applicationCullCallback(node),
                                     node.getCullCallback(),
+                                    SceneWatch::None,
+                                    node.getCullingActive(),
                                     false,
                                     static_cast<std::uint32_t>(_watch._children.size()),
                                     0,
@@ -262,6 +264,7 @@ void SceneWatch::clear()
     _states.clear();
     _markers.clear();
     _held.clear();
+    _adopted.clear();
 }
 
 void SceneWatch::record(osg::Node& root)
@@ -269,6 +272,17 @@ void SceneWatch::record(osg::Node& root)
     clear();
     SceneWatchRecorder recorder(*this);
     root.accept(recorder);
+}
+
+// The node's slot for what it takes on after the recording, made at its first swap.
+SceneWatch::AdoptedEntry& SceneWatch::adopted(const NodeEntry& entry) const
+{
+    if (entry.adopted == None)
+    {
+        entry.adopted = static_cast<std::uint32_t>(_adopted.size());
+        _adopted.push_back({nullptr, NoState, nullptr});
+    }
+    return _adopted[entry.adopted];
 }
 
 // One node's own fields, its children, its geometry and its matrix, read in one visit.
@@ -283,19 +297,19 @@ SceneWatch::Reading SceneWatch::read(const NodeEntry& entry) const
         if (key != entry.stateKey)
             return Reading::Other;
         entry.stateSet = stateSet;
-        if (stateSet)
-        {
-            _held.emplace_back(stateSet);
-            _states.push_back({stateSet, key});
-        }
+        AdoptedEntry& slot = adopted(entry);
+        slot.stateSet = stateSet; // held: its address is compared from now on
+        slot.key = key;
     }
     if (const osg::Callback* callback = node.getCullCallback(); callback != entry.seenCallback)
     {
         if (applicationCullCallback(node) != entry.cullCallback)
             return Reading::Other;
         entry.seenCallback = callback;
-        _held.emplace_back(callback); // its address is compared from now on
+        adopted(entry).callback = callback; // held: its address is compared from now on
     }
+    if (node.getCullingActive() != entry.cullingActive)
+        return Reading::Other;
     if (entry.listsChildren)
     {
         const osg::Group& group = *node.asGroup();
@@ -320,6 +334,18 @@ SceneWatch::Reading SceneWatch::read(const NodeEntry& entry) const
     if (entry.transform != None && !sameMatrix(localMatrix(*node.asTransform()), _transforms[entry.transform].matrix))
         return Reading::Moved;
     return Reading::Same;
+}
+
+// A state set in use edited in place: the recorded ones, and those nodes swapped to since.
+bool SceneWatch::statesChanged() const
+{
+    for (const KeyEntry& entry : _states)
+        if (drawnStateKey(*static_cast<const osg::StateSet*>(entry.object)) != entry.key)
+            return true;
+    for (const AdoptedEntry& entry : _adopted)
+        if (entry.stateSet && drawnStateKey(*entry.stateSet) != entry.key)
+            return true;
+    return false;
 }
 
 bool SceneWatch::changed() const
@@ -366,12 +392,11 @@ const SceneWatch::Difference& SceneWatch::compare() const
             return out;
         }
     }
-    for (const KeyEntry& entry : _states)
-        if (drawnStateKey(*static_cast<const osg::StateSet*>(entry.object)) != entry.key)
-        {
-            out.other = true;
-            return out;
-        }
+    if (statesChanged())
+    {
+        out.other = true;
+        return out;
+    }
     for (const KeyEntry& entry : _markers)
         if (markerKey(*static_cast<const osg::Node*>(entry.object)) != entry.key)
         {

@@ -3,8 +3,8 @@
 // Internal: how a ViewCuller finds, at each cull, that the subgraph it extracted has changed although
 // nobody called dirtyScene(). OSG tells no one about changes, so right after an extraction the watch
 // records everything the extraction read (per node: children and their masks, the children an active
-// traversal enters, matrices, state, drawables' bounds and geometry counters), and each cull compares
-// it again in flat arrays (docs/changes.md lists what is watched and why).
+// traversal enters, culling-active flags, matrices, state, drawables' bounds and geometry counters),
+// and each cull compares it again in flat arrays (docs/changes.md lists what is watched and why).
 #include <osg/BoundingBox>
 #include <osg/Geometry>
 #include <osg/Matrixd>
@@ -41,6 +41,10 @@ public:
     void clear();
     /// What is watched, for statistics and benchmarks.
     std::size_t nodeCount() const { return _nodes.size(); }
+    /// State sets whose values are compared, and objects held (recorded, and taken on since by
+    /// nodes that swapped to an equal state set): bounded by what was recorded, for tests.
+    std::size_t stateEntries() const { return _states.size() + _adopted.size(); }
+    std::size_t heldEntries() const { return _held.size() + 2 * _adopted.size(); }
 
 private:
     friend class SceneWatchRecorder;
@@ -56,6 +60,9 @@ private:
         /// The callback last found on the node that leads to cullCallback (osgVis's own installs
         /// after the recording): compared first, as a pointer.
         mutable const osg::Callback* seenCallback;
+        /// Its slot in _adopted once it swapped state set or callback since the recording (None before).
+        mutable std::uint32_t adopted;
+        bool cullingActive;                   ///< getCullingActive(): what lies below a node without it is never culled
         bool listsChildren;                   ///< a group's children are listed; a paged node's are not (the pager's)
         std::uint32_t firstChild, childCount; ///< in _children
         std::uint32_t transform, drawable;    ///< in _transforms, _drawables, or None
@@ -88,6 +95,14 @@ private:
         const osg::Referenced* object; ///< a state set or an osgVis marker node
         std::uint64_t key;
     };
+    /// What one node took on since the recording, held: its state set now (equal to the recorded
+    /// one for the extraction, its values watched from then on) and the callback last seen on it.
+    struct AdoptedEntry
+    {
+        osg::ref_ptr<const osg::StateSet> stateSet;
+        std::uint64_t key; ///< the state set's drawnStateKey when it was taken on
+        osg::ref_ptr<const osg::Callback> callback;
+    };
 
     enum class Reading
     {
@@ -96,6 +111,8 @@ private:
         Other
     };
     Reading read(const NodeEntry& entry) const;
+    AdoptedEntry& adopted(const NodeEntry& entry) const;
+    bool statesChanged() const;
 
     std::vector<NodeEntry> _nodes;
     std::vector<ChildEntry> _children;
@@ -103,10 +120,14 @@ private:
     std::vector<const osg::Node*> _selected;
     std::vector<TransformEntry> _transforms;
     std::vector<DrawableEntry> _drawables;
-    mutable std::vector<KeyEntry> _states; ///< each distinct state set's values
+    std::vector<KeyEntry> _states; ///< each distinct recorded state set's values
     std::vector<KeyEntry> _markers;
     /// Everything above is held, so that no address compared is ever reused by a new object.
-    mutable std::vector<osg::ref_ptr<const osg::Referenced>> _held;
+    std::vector<osg::ref_ptr<const osg::Referenced>> _held;
+    /// One slot per node that swapped since the recording, replaced at each swap: an application
+    /// toggling between two state sets (a highlight) would otherwise grow the watch every frame. What
+    /// a slot lets go of is compared by no one any more (the node's entry points to the new object).
+    mutable std::vector<AdoptedEntry> _adopted;
     mutable Difference _difference; ///< compare's answer, kept so that a warm compare allocates nothing
 };
 } // namespace osgVis

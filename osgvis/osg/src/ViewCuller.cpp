@@ -2,6 +2,7 @@
 #include <osgVis/ViewCuller>
 
 #include "Extraction.h"
+#include "OsgCullRules.h"
 #include "PagingPolicy.h"
 #include "SceneWatch.h"
 
@@ -18,10 +19,22 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 
 namespace osgVis
 {
+namespace
+{
+// An object's bounds in floats, rounded outwards, and its id: a walk over every object that reads
+// nothing else (the extraction's records are large and scattered).
+struct ObjectBox
+{
+    float min[3], max[3];
+    core::ObjectId id;
+};
+} // namespace
+
 struct ViewCuller::PerView
 {
     explicit PerView(const core::SessionOptions& options) : session(options) {}
@@ -34,6 +47,9 @@ struct ViewCuller::PerView
     osg::Vec3d previousEye;                       // in the root's frame, at previousFrame
     unsigned previousFrame = ~0u;
     core::VisibleSet seenAhead; // the prefetch's region answer (regionSeenAhead)
+    core::Aabb bounds;          // of `scene`'s objects with finite bounds
+    std::vector<ObjectBox> boxes; // `scene`'s live objects, compact, for keepNearTheEye
+    std::vector<const osg::StateSet*> stateSets; // whyLeftToOsg's scratch space
 };
 
 namespace
@@ -89,6 +105,46 @@ void countVisible(const ExtractedScene& scene, std::size_t objects, const core::
             ++figures.clustersVisible;
     });
     figures.pagedNodesSkipped = figures.pagedNodes - pagedVisible; // deferred ones included
+}
+
+// Keeps the objects within the near plane's reach of the eye: the modules culled with a near plane no
+// nearer than OSG's can be (projectionForModules), and OSG may draw them in front of it.
+void keepNearTheEye(const std::vector<ObjectBox>& boxes, const core::View& view, core::VisibleSet& visible)
+{
+    const double reach = core::nearPlaneReach(view);
+    const double reach2 = reach * reach;
+    for (const ObjectBox& box : boxes)
+    {
+        double distance2 = 0.0;
+        for (int axis = 0; axis < 3; ++axis)
+        {
+            const double e = view.eye[axis];
+            const double d = e < box.min[axis] ? box.min[axis] - e : e > box.max[axis] ? e - box.max[axis] : 0.0;
+            distance2 += d * d;
+        }
+        if (distance2 <= reach2)
+            visible.set(box.id);
+    }
+}
+
+// The live objects' boxes, in floats rounded outwards (never smaller than the box).
+void compactBoxes(const ExtractedScene& scene, std::vector<ObjectBox>& out)
+{
+    out.clear();
+    for (core::ObjectId id = 0; id < scene.scene.objects.size(); ++id)
+    {
+        const core::Aabb& box = scene.scene.objects[id].bounds;
+        if (scene.removed(id) || box.empty())
+            continue;
+        ObjectBox compact{};
+        compact.id = id;
+        for (int axis = 0; axis < 3; ++axis)
+        {
+            compact.min[axis] = std::nextafter(float(box.min[axis]), -std::numeric_limits<float>::infinity());
+            compact.max[axis] = std::nextafter(float(box.max[axis]), std::numeric_limits<float>::infinity());
+        }
+        out.push_back(compact);
+    }
 }
 
 // A copy of a member taken under `mutex` (the getters: other threads cull while they are called).
@@ -227,11 +283,10 @@ std::shared_ptr<ViewCuller::PerView> ViewCuller::viewFor(const osg::Referenced* 
 osg::ref_ptr<const ExtractedScene> ViewCuller::currentScene(osgUtil::CullVisitor& cv, osg::Node& root, bool& extracted)
 {
     const bool extract = !_scene || _root.get() != &root;
-    const unsigned frame = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : ~0u;
-    // note: the application changes the graph in update, before every view's cull, so one
-    // comparison a frame suffices; without frame stamps every cull compares
+    // note: every cull compares, not once a frame: an application may change the graph between two
+    // culls of one frame (a cull callback, a second camera, two culls with one frame stamp)
     osg::ref_ptr<ExtractedScene> moved; // only matrices changed: the objects below them placed again
-    if (!extract && !_dirty && (frame == ~0u || frame != _watchedFrame))
+    if (!extract && !_dirty)
     {
         const SceneWatch::Difference& difference = _watch->compare();
         if (!difference.other && !difference.moved.empty())
@@ -241,7 +296,6 @@ osg::ref_ptr<const ExtractedScene> ViewCuller::currentScene(osgUtil::CullVisitor
         else
             _dirty = difference.any();
     }
-    _watchedFrame = frame;
     // note: a paged node whose child count changed was merged into or expired by the pager; only
     // its children are extracted again, unless the whole root is dirty anyway
     const bool paged = !extract && !_dirty && !moved && _scene->pagedNodesChanged();
@@ -300,6 +354,8 @@ void ViewCuller::handOver(PerView& view, const osg::ref_ptr<const ExtractedScene
     view.objects = 0;
     for (core::ObjectId id = 0; id < scene->refs.size(); ++id)
         view.objects += !scene->removed(id) && !scene->placeholder(id);
+    view.bounds = scene->scene.bounds();
+    compactBoxes(*scene, view.boxes);
 }
 
 // After the cull: what the pager is asked for, kept fresh and fetched ahead (docs/paging.md).
@@ -371,21 +427,37 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
 
     const auto start = std::chrono::steady_clock::now();
     handOver(*view, scene);
+    // OSG's rules first: where they break what the extraction assumed, OSG alone culls this view
+    const char* leftToOsg = whyLeftToOsg(cv, *scene, view->stateSets);
+    osg::Matrixd modulesProjection = projection;
+    const ModulesProjection projected =
+        leftToOsg ? ModulesProjection::AsDrawn : projectionForModules(cv, modelView, view->bounds, modulesProjection);
+    if (projected == ModulesProjection::Unknown)
+        leftToOsg = "near and far computed by OSG for a projection the kit cannot bound";
     const osg::Viewport* viewport = cv.getViewport();
     const osg::FrameStamp* frameStamp = cv.getFrameStamp();
-    const core::View coreView =
-        core::makeView(toCore(modelView), toCore(projection), frameStamp ? frameStamp->getSimulationTime() : 0.0,
-                       viewport ? static_cast<std::uint32_t>(viewport->width()) : 1280u,
-                       viewport ? static_cast<std::uint32_t>(viewport->height()) : 1024u);
+    core::View coreView = core::makeView(
+        toCore(modelView), toCore(modulesProjection), frameStamp ? frameStamp->getSimulationTime() : 0.0,
+        viewport ? static_cast<std::uint32_t>(viewport->width()) : 1280u,
+        viewport ? static_cast<std::uint32_t>(viewport->height()) : 1024u);
+    coreView.depthBits = depthBitsOf(camera);
     CullStatistics figures;
-    view->session.cull(coreView, start);
-    const core::SessionFigures& answered = view->session.figures();
-    figures.async = answered.async;
-    figures.asyncFallback = answered.asyncFallback;
-    figures.backOff = answered.backOff;
-    figures.backedOff = answered.backedOff;
-    if (!figures.backedOff)
-        drivePaging(*view, cv, paging, coreView, modelView, projection, figures);
+    figures.leftToOsg = leftToOsg;
+    if (leftToOsg)
+        view->session.visible().reset(scene->refs.size(), true);
+    else
+    {
+        view->session.cull(coreView, start);
+        if (projected == ModulesProjection::Adjusted)
+            keepNearTheEye(view->boxes, coreView, view->session.visible());
+        const core::SessionFigures& answered = view->session.figures();
+        figures.async = answered.async;
+        figures.asyncFallback = answered.asyncFallback;
+        figures.backOff = answered.backOff;
+        figures.backedOff = answered.backedOff;
+        if (!figures.backedOff)
+            drivePaging(*view, cv, paging, coreView, modelView, projection, figures);
+    }
     const auto end = std::chrono::steady_clock::now();
     if (debugLock.owns_lock())
         debugLock.unlock();
@@ -401,7 +473,7 @@ ViewCuller::Result ViewCuller::cull(osgUtil::CullVisitor& cv, osg::Node& root, c
         std::lock_guard<std::mutex> lock(_mutex);
         _last = figures;
     }
-    return {scene, &view->session.visible(), figures.backedOff};
+    return {scene, &view->session.visible(), figures.backedOff || figures.leftToOsg};
 }
 
 CullStatistics ViewCuller::getLastStatistics() const
