@@ -7,13 +7,9 @@
 // with an affinity partitioner, so a subtree tends to stay on the thread that has its caches.
 // On a renderer's hierarchy (visibility API §3.3) the same tests run in its traversal's order,
 // node by node, on the recorded tight boxes (HierarchyIndex), with one cache per node id.
-#include <osgVis/core/octree/OctreeModule.h>
+#include "OctreeImpl.h"
 
 #include <osgVis/core/occluders/CoplanarUnion.h>
-#include <osgVis/core/spatial/SceneHierarchyChoice.h>
-#include "OccluderShadow.h"
-#include "OcclusionCache.h"
-#include "OcclusionTree.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
@@ -43,126 +39,10 @@ Aabb boundsOf(const OccluderPolygon& polygon)
         bounds.expand(v);
     return bounds;
 }
-
-struct Range
-{
-    std::uint32_t first, count;
-};
-
-// Per-thread scratch of the traversal and what it found.
-struct TraversalOutput
-{
-    std::vector<Range> culled;                     // item ranges of hidden or outside-frustum subtrees
-    std::vector<std::vector<std::uint32_t>> lists; // partial-occluder list per depth
-    std::vector<const BoxOccluderPlanes*> partialPlanes;
-    std::vector<BoxOccluderPlanes> fusedPlanes;
-    std::vector<std::uint32_t> fusedCandidates, fusedGroup;
-    std::vector<const BoxOccluderPlanes*> fusedCandidatePlanes;
-    std::vector<std::size_t> fusedMembers;
-    std::vector<std::uint8_t> fusedTaken;
-    std::vector<DebugRecord::Node> debugNodes;
-    OctreeModule::Statistics statistics;
-
-    // Sized once for the tree's depth (see prepare): the traversal holds references into it.
-    std::vector<std::uint32_t>& list(std::uint32_t depth) { return lists[depth]; }
-    void prepare(std::size_t treeDepth) { lists.resize(treeDepth + 2); }
-};
-
-// A subtree handed from the serial top of the traversal to the parallel part.
-struct FrontierTask
-{
-    std::uint32_t node = 0;
-    std::uint32_t depth = 0;
-    bool active = false;
-    unsigned planeMask = 0;
-    std::vector<std::uint32_t> occluders;
-    TraversalOutput output;
-};
 } // namespace
 
-struct OctreeModule::Impl
-{
-    KdTree tree; // empty while the scene's hierarchy is walked
-    // The renderer's hierarchy, when usable: its index records the nodes' tight boxes and objects.
-    // Each box is tested on its own, so siblings may come in any order.
-    SceneHierarchyChoice sceneHierarchy{false};
-    std::vector<BoxOcclusionCache> hierarchyCaches; // per node id
-    std::uint32_t hierarchyDepth = 0;               // deepest level the last traversal reached
-    std::vector<unsigned> hierarchyPlaneMasks;      // per depth: the plane mask a node passes on
-    std::vector<OccluderPolygon> polygons;
-    std::vector<PreparedOccluder> prepared; // per polygon: its box-independent part of computePlanes
-    OccluderSelector selector;
-    std::vector<BoxOcclusionCache> nodeCaches, objectCaches;
-    std::vector<std::int32_t> frontierSlot; // per node: its frontier task index, or -1
-    std::vector<FrontierTask> frontier;
-    tbb::affinity_partitioner affinity;
-    TraversalOutput serial;
-    double sceneSize = 1.0;
-    std::uint32_t frame = 0;
-    DebugRecord* debug = nullptr;
-    Statistics statistics;
-
-    // Per-frame inputs. A region query has a volume of eyes and no frustum (root plane mask 0).
-    Vec3 eye{0.0};
-    EyeVolume eyes;
-    const Frustum* frustum = nullptr;
-    unsigned rootPlaneMask = 0x3Fu;
-    double nearDistance = 0.0;
-    std::vector<std::uint32_t> active;
-    std::vector<double> margins; // per polygon index, valid for `active` ones
-    OccluderShadows shadows;     // of the `active` ones, for a point eye
-    std::vector<Aabb> polygonBounds;
-    std::vector<std::pair<double, std::uint32_t>> ranked;
-    double threshold = 0.0;
-
-    // The occlusion-tree sweep (fuseDisjoint): each object's own polygons, the stated ones, and
-    // per-frame scratch.
-    std::vector<std::vector<std::uint32_t>> objectPolygons;
-    std::vector<double> largestPolygonArea; // per object: bounds the area-angle of all its polygons
-    std::vector<std::uint32_t> statedPolygons;
-    std::vector<Vec3> objectPoints;         // per object its distinct vertices (static objects)…
-    std::vector<std::uint32_t> pointsFirst; // …from pointsFirst[id] to pointsFirst[id + 1]
-    OcclusionTree occlusionTree;
-    std::vector<std::pair<double, ObjectId>> sweepOrder;
-    std::vector<std::uint64_t> insertedAs; // per polygon: 2·stamp + (1 when flipped) if inserted this round
-    std::vector<std::uint32_t> sweptIn;    // per polygon: the frame it joined the sweep's tree
-    std::uint64_t insertStamp = 0;
-    std::vector<Vec3> insertVertices;
-    std::vector<double> insertMargins;
-
-    void build(const Scene& scene, const OctreeOptions& options);
-    void collectObjectPoints(const Scene& scene);
-    void chooseFrontier(std::size_t wanted);
-    std::size_t treeDepth() const;
-    void traverse(const Scene& scene, const OctreeOptions& options, std::uint32_t node, std::uint32_t depth,
-                  unsigned planeMask, const std::vector<std::uint32_t>& occluders, TraversalOutput& out,
-                  bool stopAtFrontier);
-    Occlusion testBox(BoxOcclusionCache& cache, const Aabb& box, const std::vector<std::uint32_t>& occluders, bool fuse,
-                      std::vector<std::uint32_t>& partial, TraversalOutput& out);
-    bool depthSeparated(const OccluderPolygon& polygon, const Aabb& box) const;
-    double depthTolerance(const Aabb& box) const;
-    double marginOf(const OccluderPolygon& polygon) const;
-    void sweep(const Scene& scene, const View& view, const OctreeOptions& options, VisibleSet& visible);
-    void insertPolygons(const std::vector<std::uint32_t>& batch, const View& view, const OctreeOptions& options,
-                        bool oneObject);
-    void chooseOccluders(const View& view, std::uint32_t k);
-    void chooseRegionOccluders(const ViewRegion& region, std::uint32_t k);
-    template <class Usable> void chooseBest(std::uint32_t k, Usable usable);
-    void rank(std::uint32_t o, double metric, std::uint32_t k);
-    void activateRanked();
-    void beginQuery(const OctreeOptions& options, const Vec3& center, const Vec3& halfExtent);
-    void traverseAll(const Scene& scene, const OctreeOptions& options, VisibleSet& visible);
-    void traverseHierarchy(const Scene& scene, const OctreeOptions& options);
-    void testObjects(const Scene& scene, const OctreeOptions& options, const std::vector<std::uint32_t>& items,
-                     Range range, unsigned planeMask, const std::vector<std::uint32_t>& partial,
-                     std::vector<std::uint32_t>& objectPartial, std::uint32_t depth, TraversalOutput& out);
-    void applyCulled(const TraversalOutput& out, const std::vector<std::uint32_t>& items, VisibleSet& visible);
-    bool hasObjects() const
-    {
-        return sceneHierarchy.walks() ? !sceneHierarchy.index().objects().empty() : !tree.empty();
-    }
-    bool fusedHidden(const Aabb& box, const std::vector<std::uint32_t>& partial, TraversalOutput& out);
-};
+using octree_impl::Range;
+using octree_impl::TraversalOutput;
 
 void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
 {
@@ -224,6 +104,7 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
     insertedAs.assign(polygons.size(), 0);
     sweptIn.assign(polygons.size(), 0);
     insertStamp = 0;
+    indexDependents(scene);
     chooseFrontier(tree.empty() || tree.root().itemCount < options.parallelMinObjects ? 0 : 64);
     const std::size_t depth = treeDepth();
     serial.prepare(depth);
@@ -380,7 +261,8 @@ template <class Usable> void OctreeModule::Impl::chooseBest(std::uint32_t k, Usa
     for (std::uint32_t o : selector.potentialOccluders(selector.leafOf(eye)))
     {
         const double metric = areaAngle(polygons[o], eye);
-        if (metric < threshold || (ranked.size() == k && metric <= ranked.back().first) || !usable(o))
+        if (metric < threshold || (ranked.size() == k && metric <= ranked.back().first) || polygonDisabled[o] ||
+            !usable(o))
             continue;
         rank(o, metric, k);
     }
@@ -459,104 +341,6 @@ double OctreeModule::Impl::depthTolerance(const Aabb& box) const
     return farthest * farthest / (nearDistance * DepthResolution) + 1e-6 * sceneSize;
 }
 
-// Occluder fusion without shared edges: objects the traversal left visible, nearest first, are
-// tested against an occlusion tree of the polygons of the objects kept before them; a kept
-// object's polygons then join the tree. Only drawn objects' polygons (and stated occluders)
-// occlude, and the order is fixed (distance, then id), so the answer is the same at every thread
-// count.
-void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const OctreeOptions& options, VisibleSet& visible)
-{
-    occlusionTree.reset(eye, view.frustum.plane(Frustum::NEAR).normal, sceneSize);
-    sweepOrder.clear();
-    for (ObjectId id = 0; id < scene.objects.size(); ++id)
-        if (visible.test(id) && (scene.objects[id].flags & OBJECT_ALWAYS_VISIBLE) == 0)
-            sweepOrder.push_back({scene.objects[id].bounds.distance(eye), id});
-    std::sort(sweepOrder.begin(), sweepOrder.end());
-    insertPolygons(statedPolygons, view, options, false);
-    // Below every tree node.
-    const std::uint32_t debugDepth = debug ? std::uint32_t(std::max<std::size_t>(treeDepth(), hierarchyDepth) + 1) : 0;
-    for (const auto& [distance, id] : sweepOrder)
-    {
-        const Aabb& bounds = scene.objects[id].bounds;
-        const std::uint32_t first = pointsFirst[id], count = pointsFirst[id + 1] - first;
-        const bool hidden = count > 0
-                                ? occlusionTree.hidden(&objectPoints[first], count, bounds, depthTolerance(bounds))
-                                : occlusionTree.hidden(bounds, depthTolerance(bounds));
-        if (hidden)
-        {
-            visible.clear(id);
-            ++statistics.sweptHidden;
-            if (debug)
-                serial.debugNodes.push_back({bounds, NodeState::Invisible, debugDepth});
-            continue;
-        }
-        // A polygon's area-angle is at most its area over the squared distance to the object's box:
-        // an object whose largest polygon falls short from here has nothing for the tree.
-        const double threshold = options.sweepAreaAngleThreshold;
-        if (occlusionTree.nodeCount() < options.occlusionTreeMaxNodes &&
-            !(largestPolygonArea[id] < threshold * distance * distance))
-            insertPolygons(objectPolygons[id], view, options, true);
-    }
-    statistics.sweptTreeNodes = std::uint32_t(occlusionTree.nodeCount());
-    statistics.sweptOccluders = std::uint32_t(occlusionTree.occluderCount());
-}
-
-// One object's polygons (or the stated ones). An object seen from outside hides with the faces
-// turned to the eye; its two-sided faces turned away count (flipped) only when it shows the eye no
-// face, as a lone wall seen from behind. Stated polygons are each their own occluder and count
-// from either side. An edge shared with a polygon of the same batch facing the same way needs no
-// margin: the renderer rasterizes the shared edge without a crack. Polygons the near plane could
-// clip, and those outside the frustum, are left out.
-void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch, const View& view,
-                                        const OctreeOptions& options, bool oneObject)
-{
-    const double minAreaAngle = oneObject ? options.sweepAreaAngleThreshold : 0.0;
-    const Plane& nearPlane = view.frustum.plane(Frustum::NEAR);
-    ++insertStamp;
-    bool facesEye = false;
-    for (std::uint32_t p : batch)
-    {
-        const OccluderPolygon& polygon = polygons[p];
-        const double side = polygon.plane.distance(eye);
-        const bool usable = sweptIn[p] != frame && (side > 0.0 || (!polygon.oneSided && side < 0.0)) &&
-                            areaAngle(polygon, eye) >= minAreaAngle &&
-                            std::all_of(polygon.vertices.begin(), polygon.vertices.end(),
-                                        [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; }) &&
-                            view.frustum.classify(polygonBounds[p]) != Containment::Outside;
-        insertedAs[p] = usable ? 2 * insertStamp + (side < 0.0 ? 1 : 0) : 0;
-        facesEye = facesEye || (usable && side > 0.0);
-    }
-    if (oneObject && facesEye)
-        for (std::uint32_t p : batch)
-            if ((insertedAs[p] & 1u) != 0)
-                insertedAs[p] = 0;
-    for (std::uint32_t p : batch)
-    {
-        if (insertedAs[p] == 0)
-            continue;
-        const OccluderPolygon& polygon = polygons[p];
-        const bool flipped = (insertedAs[p] & 1u) != 0;
-        sweptIn[p] = frame;
-        const double margin = marginOf(polygon);
-        const std::size_t n = polygon.vertices.size();
-        insertVertices.resize(n);
-        insertMargins.resize(n);
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            // Flipped, vertex i is the original n-1-i and edge i the original edge n-2-i reversed.
-            const std::size_t vertex = flipped ? n - 1 - i : i;
-            const std::size_t edge = flipped ? (2 * n - 2 - i) % n : i;
-            insertVertices[i] = polygon.vertices[vertex];
-            const std::uint32_t neighbour = polygon.neighbours.empty() ? NoNeighbour : polygon.neighbours[edge];
-            insertMargins[i] = neighbour != NoNeighbour && insertedAs[neighbour] == insertedAs[p] ? 0.0 : margin;
-        }
-        const Plane plane = flipped ? Plane(-polygon.plane.normal, -polygon.plane.d) : polygon.plane;
-        occlusionTree.insert(insertVertices, plane, insertMargins);
-        if (occlusionTree.nodeCount() >= options.occlusionTreeMaxNodes)
-            break;
-    }
-}
-
 Occlusion OctreeModule::Impl::testBox(BoxOcclusionCache& cache, const Aabb& box,
                                       const std::vector<std::uint32_t>& occluders, bool fuse,
                                       std::vector<std::uint32_t>& partial, TraversalOutput& out)
@@ -620,6 +404,8 @@ void OctreeModule::Impl::testObjects(const Scene& scene, const OctreeOptions& op
 {
     for (std::uint32_t i = range.first; i < range.first + range.count; ++i)
     {
+        if (isChanged(items[i]))
+            continue; // testMoved's
         const Aabb& bounds = scene.objects[items[i]].bounds;
         unsigned objectMask = planeMask;
         NodeState state = NodeState::Visible;
@@ -713,12 +499,6 @@ void OctreeModule::setScene(const Scene& scene)
     _impl->build(scene, _options);
 }
 
-void OctreeModule::sceneChanged(const SceneChange& change)
-{
-    (void)change;
-    setScene(*_scene); // note: occluders and tree both depend on the moved geometry
-}
-
 void OctreeModule::setDebugRecord(DebugRecord* record)
 {
     _impl->debug = record;
@@ -776,6 +556,7 @@ void OctreeModule::cull(const View& view, VisibleSet& visible)
     if (pointEye && m.nearDistance > 0.0 && !m.polygons.empty())
         m.chooseOccluders(view, _options.occluders);
     m.traverseAll(*_scene, _options, visible);
+    m.testMoved(*_scene, _options, visible);
     if (_options.fuseDisjoint && pointEye && m.nearDistance > 0.0 && !m.polygons.empty())
         m.sweep(*_scene, view, _options, visible);
 
@@ -806,6 +587,7 @@ void OctreeModule::cullRegion(const ViewRegion& region, VisibleSet& visible)
         m.chooseRegionOccluders(region, std::uint32_t(BoxOcclusionCache::MaxRelations));
     }
     m.traverseAll(*_scene, _options, visible);
+    m.testMoved(*_scene, _options, visible);
     if (m.debug)
         m.debug->nodes = m.serial.debugNodes;
 }
@@ -858,7 +640,7 @@ void OctreeModule::Impl::applyCulled(const TraversalOutput& out, const std::vect
 {
     for (const Range& r : out.culled)
         for (std::uint32_t i = r.first; i < r.first + r.count; ++i)
-            if (visible.test(items[i]))
+            if (visible.test(items[i]) && !isChanged(items[i])) // changed: testMoved's
                 visible.clear(items[i]);
     const Statistics& s = out.statistics;
     statistics.nodesVisited += s.nodesVisited;

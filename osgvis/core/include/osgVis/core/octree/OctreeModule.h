@@ -56,7 +56,11 @@ public:
     ~OctreeModule() override;
     const char* name() const override;
     void setScene(const Scene& scene) override;
+    /// Moved and inserted objects are tested on their own and no polygon resting on a changed
+    /// object occludes, in time that grows with the change; a quarter of the objects changed (or
+    /// other stated occluders) rebuilds.
     void sceneChanged(const SceneChange& change) override;
+    void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes) override;
     void cull(const View& view, VisibleSet& visible) override;
     /// Regions: the same traversal with every decision made for the whole box of eyes (a box is
     /// hidden only when the eye volume lies inside all the deciding planes), no frustum, up to 64
@@ -75,6 +79,8 @@ public:
         std::uint32_t sweptHidden = 0, sweptOccluders = 0, sweptTreeNodes = 0;
         /// Nodes of the renderer's traversal that differ from what was recorded: kept, not tested.
         std::uint32_t nodesStrayed = 0;
+        /// Objects moved or inserted since the tree was built, tested on their own.
+        std::uint32_t changedTested = 0;
     };
     Statistics lastStatistics() const;
     /// True when the last setScene took the scene's hierarchy; else why not ("" when it had none).
