@@ -8,6 +8,7 @@
 //
 // World: z up. Most views look along +y from the eye, so eye-space right = +x, up = +z.
 #include "BoxScenes.h"
+#include "ChangingScene.h"
 #include "RayCastVisibility.h"
 #include "TestHierarchies.h"
 
@@ -50,15 +51,6 @@ const char* reasonName(Reason r)
 
 // ---- scenes ---------------------------------------------------------------------------------
 
-// Moves a box object in place (same triangle count, new bounds and triangles).
-void reshapeBox(Scene& scene, ObjectId id, const Vec3& lo, const Vec3& hi)
-{
-    const std::vector<Triangle> t = boxTriangles(lo, hi);
-    SceneObject& object = scene.objects[id];
-    ASSERT_EQ(object.triangleCount, t.size());
-    std::copy(t.begin(), t.end(), scene.triangles.begin() + object.firstTriangle);
-    object.bounds = boundsOf(t);
-}
 
 // ---- views ----------------------------------------------------------------------------------
 
@@ -732,9 +724,8 @@ TEST(MaskModule, ViewportChangeBetweenFrames)
 
 // ---- dynamic scenes -------------------------------------------------------------------------
 
-// A street front (building at x -10..10, y 0..10, height 15) hiding three boxes, an open box to the
-// right, eye at (0, -20, 5) looking along +y (the front spans image x within ±0.5 of the depth;
-// open places lie beyond). Changes go either to the scene in place
+// The street front (ChangingScene.h), eye at (0, -20, 5) looking along +y (the front spans image x
+// within ±0.5 of the depth; open places lie beyond). Changes go either to the scene in place
 // (sceneChanged) or to a copy (sceneReplaced), the copies kept alive as the module may hold any.
 // Each test runs with both occluder measures, and on a renderer's kd-tree recorded before the
 // changes (which no longer holds what moved or came in).
@@ -751,28 +742,23 @@ protected:
     // A fresh scene and module (each test runs both ways of telling the module about changes).
     void reset()
     {
-        scenes.clear();
-        hiddenBoxes.clear();
-        auto scene = std::make_unique<Scene>();
-        front = addBox(*scene, {-10, 0, 0}, {10, 10, 15}, "street front");
-        for (int i = 0; i < 3; ++i)
-            hiddenBoxes.push_back(
-                addBox(*scene, {-6.0 + 4.0 * i, 20, 0}, {-5.0 + 4.0 * i, 21, 2}, "hidden box " + std::to_string(i)));
-        open = addBox(*scene, {25, 20, 0}, {26, 21, 2}, "open box");
-        scenes.push_back(std::move(scene));
-        removed.assign(scene_().objects.size(), false);
+        StreetFront street = makeStreetFront();
+        front = street.front;
+        open = street.open;
+        hiddenBoxes = street.hiddenBoxes;
         if (GetParam() == DynamicSetup::CoverageOnRendererKdTree)
-            scenes.back()->hierarchy = kdTreeOf(scene_());
+            street.scene.hierarchy = kdTreeOf(street.scene);
+        scenes.reset(std::move(street.scene));
         module = makeMode(GetParam() == DynamicSetup::Distance ? "mask-distance" : "mask");
         module->setScene(scene_());
         EXPECT_EQ(asMask(*module).walksSceneHierarchy(), GetParam() == DynamicSetup::CoverageOnRendererKdTree);
     }
-    const Scene& scene_() const { return *scenes.back(); }
+    const Scene& scene_() const { return scenes.current(); }
     View at(double time, const Vec3& eye = {0, -20, 5}) const { return lookAlongY(eye, time, 160, 120); }
 
     VisibleSet check(const std::string& what, const View& view)
     {
-        return cullAndCheck(what, *module, scene_(), view, removed);
+        return cullAndCheck(what, *module, scene_(), view, scenes.removed());
     }
     // The critical frame everything starts from; the boxes behind the front must be culled there,
     // or the tests below would prove nothing.
@@ -786,26 +772,11 @@ protected:
     void change(SceneChange::Kind kind, std::vector<ObjectId> ids, const std::function<void(Scene&)>& mutate,
                 bool replace)
     {
-        const SceneChange c{kind, ids};
-        if (replace)
-        {
-            scenes.push_back(std::make_unique<Scene>(*scenes.back()));
-            mutate(*scenes.back());
-            module->sceneReplaced(scene_(), {c});
-        }
-        else
-        {
-            mutate(*scenes.back());
-            module->sceneChanged(c);
-        }
-        removed.resize(scene_().objects.size(), false);
-        for (ObjectId id : ids)
-            removed[id] = kind == SceneChange::Kind::Removed;
+        scenes.change(*module, kind, std::move(ids), mutate, replace);
     }
     MaskModule::Statistics stats() const { return asMask(*module).lastStatistics(); }
 
-    std::vector<std::unique_ptr<Scene>> scenes;
-    std::vector<bool> removed;
+    ChangingScene scenes;
     std::unique_ptr<VisibilityModule> module;
     ObjectId front = InvalidObject, open = InvalidObject;
     std::vector<ObjectId> hiddenBoxes;

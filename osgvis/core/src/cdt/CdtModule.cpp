@@ -4,7 +4,9 @@
 // with the rules of §2.3.1 for which occluders may count. docs/cdt.md says why each step is safe.
 #include <osgVis/core/cdt/CdtModule.h>
 #include <osgVis/core/cdt/CoverageTriangulation.h>
+#include <osgVis/core/module/ChangedObjects.h>
 #include <osgVis/core/occluders/OccluderBuilder.h>
+#include <osgVis/core/occluders/OccluderDependents.h>
 
 #include <osgVis/core/spatial/DisjointCellTree.h>
 #include <osgVis/core/spatial/SceneHierarchyChoice.h>
@@ -58,6 +60,11 @@ struct CdtModule::Impl
     /// direction); one lying across it on screen and drawn closes the edge without a crack.
     std::vector<std::vector<std::vector<std::uint32_t>>> twins;
     std::vector<std::vector<std::uint32_t>> polygonsOf; ///< per object
+    /// Since setScene: changed objects are left out of the walk and tested after it, and no polygon
+    /// resting on one is drawn.
+    ChangedObjects changed;
+    OccluderDependents dependents;
+    std::vector<OccluderCandidate> statedFrom; ///< the stated occluders built from
     std::vector<std::uint32_t> statedPolygons;          ///< owner InvalidObject
 
     // Per frame.
@@ -157,6 +164,31 @@ void CdtModule::setScene(const Scene& scene)
         }
     }
     m.drawn.assign(scene.objects.size(), Drawn::Untested);
+    m.changed.reset(scene.objects.size());
+    m.dependents.build(m.polygons, scene.objects.size());
+    m.statedFrom = scene.occluders;
+}
+
+void CdtModule::sceneChanged(const SceneChange& change)
+{
+    if (_scene)
+        sceneReplaced(*_scene, {change});
+}
+
+void CdtModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes)
+{
+    Impl& m = *_impl;
+    const auto nothing = [](ObjectId) {};
+    if (!_scene || !sameOccluderCandidates(scene.occluders, m.statedFrom) ||
+        !m.changed.apply(scene.objects.size(), changes, [&](ObjectId id) { m.dependents.disableAll(id); }, nothing))
+    {
+        setScene(scene);
+        return;
+    }
+    _scene = &scene;
+    // Objects inserted since setScene own no polygon.
+    m.drawn.resize(std::max(m.drawn.size(), scene.objects.size()), Drawn::Untested);
+    m.polygonsOf.resize(std::max(m.polygonsOf.size(), scene.objects.size()));
 }
 
 namespace
@@ -218,7 +250,7 @@ struct CdtModule::Impl::Frame final : HierarchyVisitor
 
     void debugNode(const Aabb& bounds, NodeState state, std::size_t depth);
     bool allowTest();
-    bool boxHidden(const Aabb& box);
+    bool boxHidden(const Aabb& box, cdt::QueryMode mode = cdt::QueryMode::DepthFree);
     void drawPolygon(std::uint32_t index, cdt::CoverKind kind);
     bool keepSharedEdges(std::uint32_t index);
     void insertProjected(std::uint32_t index, cdt::CoverKind kind, bool waits);
@@ -232,7 +264,26 @@ struct CdtModule::Impl::Frame final : HierarchyVisitor
     std::vector<std::pair<double, ObjectId>>& heldObjectsByDistance(const HierarchyIndex::Node& n, std::size_t depth);
     bool testHeldObjects(const HierarchyIndex::Node& n, const std::vector<std::pair<double, ObjectId>>& order);
     void testObject(ObjectId id, const HierarchyIndex::Node& n);
+    void testMoved();
 };
+
+// Objects moved or inserted since setScene, after the walk: against the frustum and what was drawn
+// with a depth bound. Depth-free cover says only that what the walk meets later lies behind it,
+// and a moved object may lie anywhere. They are never drawn themselves.
+void CdtModule::Impl::Frame::testMoved()
+{
+    for (ObjectId id : m.changed.moved())
+    {
+        if (stopped || !visible.test(id) || (scene.objects[id].flags & OBJECT_ALWAYS_VISIBLE) != 0)
+            continue;
+        if (!allowTest())
+            return;
+        ++m.stats.changedTested;
+        const Aabb& b = scene.objects[id].bounds;
+        if (view.frustum.classify(b) == Containment::Outside || boxHidden(b, cdt::QueryMode::DepthOnly))
+            visible.clear(id);
+    }
+}
 
 void CdtModule::Impl::Frame::debugNode(const Aabb& bounds, NodeState state, std::size_t depth)
 {
@@ -254,7 +305,7 @@ bool CdtModule::Impl::Frame::allowTest()
 }
 
 // Hidden behind what the record holds (Outside the frustum counts as hidden too).
-bool CdtModule::Impl::Frame::boxHidden(const Aabb& box)
+bool CdtModule::Impl::Frame::boxHidden(const Aabb& box, cdt::QueryMode mode)
 {
     if (view.frustum.classify(box) == Containment::Outside)
         return true;
@@ -262,13 +313,13 @@ bool CdtModule::Impl::Frame::boxHidden(const Aabb& box)
     if (!m.grid.projectBox(box, m.outline, nearestW))
         return false;
 
-    return m.record.hidden(m.outline.data(), m.outline.size(), cdt::QueryMode::DepthFree, nearestW + margin);
+    return m.record.hidden(m.outline.data(), m.outline.size(), mode, nearestW + margin);
 }
 
 void CdtModule::Impl::Frame::drawPolygon(std::uint32_t index, cdt::CoverKind kind)
 {
     const OccluderPolygon& p = m.polygons[index];
-    if (!facesEye(p, scene, view.eye))
+    if (m.dependents.disabled(index) || !facesEye(p, scene, view.eye))
         return;
     for (ObjectId part : p.parts)
         if (part >= m.drawn.size() || m.drawn[part] != Drawn::Visible)
@@ -308,6 +359,8 @@ bool CdtModule::Impl::Frame::keepSharedEdges(std::uint32_t index)
             if (mine == 0 || m.keep[e])
                 break;
             const OccluderPolygon& other = m.polygons[twin];
+            if (m.dependents.disabled(twin))
+                continue; // rests on a changed object: never drawn
             if (m.grid.sideOf(a, b, other.centroid) != -mine || !facesEye(other, scene, view.eye))
                 continue;
             bool drawnNow = other.owner < m.drawn.size() && m.drawn[other.owner] == Drawn::Visible;
@@ -390,7 +443,8 @@ void CdtModule::Impl::Frame::drawObject(ObjectId id, const Aabb* cell)
 void CdtModule::Impl::Frame::cullSubtree(const HierarchyIndex::Node& n)
 {
     for (std::uint32_t i = n.firstObject; i < n.subtreeEnd; ++i)
-        visible.clear(index.objects()[i]);
+        if (!m.changed.changed(index.objects()[i])) // testMoved's
+            visible.clear(index.objects()[i]);
 }
 
 bool CdtModule::Impl::Frame::enter(const HierarchyNode& node)
@@ -474,7 +528,7 @@ std::vector<std::pair<double, ObjectId>>& CdtModule::Impl::Frame::heldObjectsByD
     for (std::uint32_t i = n.firstObject; i < n.firstObject + n.heldCount; ++i)
     {
         const ObjectId id = index.objects()[i];
-        if (!visible.test(id))
+        if (!visible.test(id) || m.changed.changed(id))
             continue;
         const Aabb& b = scene.objects[id].bounds;
         const Vec3 nearest = glm::clamp(view.eye, b.min, b.max);
@@ -546,6 +600,7 @@ void CdtModule::cull(const View& view, VisibleSet& visible)
 
     const VisibleSet candidates = visible;
     m.hierarchy->traverse(view.eye, frame);
+    frame.testMoved();
     if (m.stats.traversalStrayed)
         visible = candidates;
     m.stats.triangles = m.record.statistics().triangles;

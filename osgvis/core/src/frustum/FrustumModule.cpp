@@ -13,6 +13,7 @@ void FrustumModule::setScene(const Scene& scene)
     for (const SceneObject& o : scene.objects)
         boxes.push_back(o.bounds);
     _tree.build(boxes);
+    _changed.reset(scene.objects.size());
     _stack.clear();
     _stack.reserve(256);
 }
@@ -28,7 +29,7 @@ void FrustumModule::cull(const View& view, VisibleSet& visible)
     const auto clearRange = [&](std::uint32_t first, std::uint32_t count) {
         for (std::uint32_t i = first; i < first + count; ++i)
         {
-            if (visible.test(items[i]))
+            if (visible.test(items[i]) && !_changed.changed(items[i])) // moved: tested below
                 visible.clear(items[i]);
         }
     };
@@ -59,7 +60,7 @@ void FrustumModule::cull(const View& view, VisibleSet& visible)
             {
                 const ObjectId id = items[i];
                 unsigned objectMask = mask;
-                if (visible.test(id) && frustum.classify(_scene->objects[id].bounds, objectMask) == Containment::Outside)
+                if (visible.test(id) && !_changed.changed(id) && frustum.classify(_scene->objects[id].bounds, objectMask) == Containment::Outside)
                     visible.clear(id);
             }
             continue;
@@ -69,5 +70,25 @@ void FrustumModule::cull(const View& view, VisibleSet& visible)
         _stack.push_back(node.right);
         _stack.push_back(mask);
     }
+    for (ObjectId id : _changed.moved())
+        if (visible.test(id) && frustum.classify(_scene->objects[id].bounds) == Containment::Outside)
+            visible.clear(id);
+}
+
+void FrustumModule::sceneChanged(const SceneChange& change)
+{
+    if (_scene)
+        sceneReplaced(*_scene, {change});
+}
+
+void FrustumModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes)
+{
+    const auto nothing = [](ObjectId) {};
+    if (!_scene || !_changed.apply(scene.objects.size(), changes, nothing, nothing))
+    {
+        setScene(scene);
+        return;
+    }
+    _scene = &scene;
 }
 } // namespace osgVis::core

@@ -4,6 +4,8 @@
 // occlusion-tree sweep (OctreeSweep.cpp) and its answer to scene changes (OctreeChanges.cpp).
 #include <osgVis/core/octree/OctreeModule.h>
 
+#include <osgVis/core/module/ChangedObjects.h>
+#include <osgVis/core/occluders/OccluderDependents.h>
 #include <osgVis/core/spatial/SceneHierarchyChoice.h>
 #include "OccluderShadow.h"
 #include "OcclusionCache.h"
@@ -110,25 +112,14 @@ struct OctreeModule::Impl
 
     // Changes since the last build (OctreeChanges.cpp): a moved or inserted object leaves the tree's
     // answer and is tested on its own at each query; no polygon resting on a changed object occludes.
-    enum : std::uint8_t
-    {
-        Unchanged,
-        Moved, // moved or inserted: drawn where the tree's boxes do not say
-        Removed
-    };
-    std::vector<std::uint8_t> changed;         // per object
-    std::vector<ObjectId> movedIds;            // the Moved ones, tested one by one
-    std::size_t changedCount = 0;              // objects changed since the build
-    std::vector<std::uint8_t> polygonDisabled; // per polygon: rests on a changed object
-    std::vector<std::uint32_t> dependentsFirst, dependents; // per object: the polygons resting on it
-    std::vector<OccluderCandidate> statedFrom;              // the stated occluders built from
+    ChangedObjects changed;
+    OccluderDependents dependents;
+    std::vector<OccluderCandidate> statedFrom; // the stated occluders built from
     TraversalOutput movedScratch;
     std::vector<std::uint32_t> movedPartial;
 
-    void indexDependents(const Scene& scene);
     bool applyChanges(const Scene& scene, const std::vector<SceneChange>& changes);
     void testMoved(const Scene& scene, const OctreeOptions& options, VisibleSet& visible);
-    bool isChanged(ObjectId id) const { return id < changed.size() && changed[id] != Unchanged; }
 
     void build(const Scene& scene, const OctreeOptions& options);
     void collectObjectPoints(const Scene& scene);

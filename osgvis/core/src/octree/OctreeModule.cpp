@@ -104,7 +104,9 @@ void OctreeModule::Impl::build(const Scene& scene, const OctreeOptions& options)
     insertedAs.assign(polygons.size(), 0);
     sweptIn.assign(polygons.size(), 0);
     insertStamp = 0;
-    indexDependents(scene);
+    changed.reset(scene.objects.size());
+    dependents.build(polygons, scene.objects.size());
+    statedFrom = scene.occluders;
     chooseFrontier(tree.empty() || tree.root().itemCount < options.parallelMinObjects ? 0 : 64);
     const std::size_t depth = treeDepth();
     serial.prepare(depth);
@@ -261,7 +263,7 @@ template <class Usable> void OctreeModule::Impl::chooseBest(std::uint32_t k, Usa
     for (std::uint32_t o : selector.potentialOccluders(selector.leafOf(eye)))
     {
         const double metric = areaAngle(polygons[o], eye);
-        if (metric < threshold || (ranked.size() == k && metric <= ranked.back().first) || polygonDisabled[o] ||
+        if (metric < threshold || (ranked.size() == k && metric <= ranked.back().first) || dependents.disabled(o) ||
             !usable(o))
             continue;
         rank(o, metric, k);
@@ -404,7 +406,7 @@ void OctreeModule::Impl::testObjects(const Scene& scene, const OctreeOptions& op
 {
     for (std::uint32_t i = range.first; i < range.first + range.count; ++i)
     {
-        if (isChanged(items[i]))
+        if (changed.changed(items[i]))
             continue; // testMoved's
         const Aabb& bounds = scene.objects[items[i]].bounds;
         unsigned objectMask = planeMask;
@@ -640,7 +642,7 @@ void OctreeModule::Impl::applyCulled(const TraversalOutput& out, const std::vect
 {
     for (const Range& r : out.culled)
         for (std::uint32_t i = r.first; i < r.first + r.count; ++i)
-            if (visible.test(items[i]) && !isChanged(items[i])) // changed: testMoved's
+            if (visible.test(items[i]) && !changed.changed(items[i])) // changed: testMoved's
                 visible.clear(items[i]);
     const Statistics& s = out.statistics;
     statistics.nodesVisited += s.nodesVisited;

@@ -28,7 +28,7 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
     {
         const Aabb& bounds = scene.objects[id].bounds;
         // A changed object's points are those of its old place: its box stands for it.
-        const std::uint32_t first = pointsFirst[id], count = isChanged(id) ? 0 : pointsFirst[id + 1] - first;
+        const std::uint32_t first = pointsFirst[id], count = changed.changed(id) ? 0 : pointsFirst[id + 1] - first;
         const bool hidden = count > 0
                                 ? occlusionTree.hidden(&objectPoints[first], count, bounds, depthTolerance(bounds))
                                 : occlusionTree.hidden(bounds, depthTolerance(bounds));
@@ -68,7 +68,7 @@ void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch,
     {
         const OccluderPolygon& polygon = polygons[p];
         const double side = polygon.plane.distance(eye);
-        const bool usable = !polygonDisabled[p] && sweptIn[p] != frame && (side > 0.0 || (!polygon.oneSided && side < 0.0)) &&
+        const bool usable = !dependents.disabled(p) && sweptIn[p] != frame && (side > 0.0 || (!polygon.oneSided && side < 0.0)) &&
                             areaAngle(polygon, eye) >= minAreaAngle &&
                             std::all_of(polygon.vertices.begin(), polygon.vertices.end(),
                                         [&](const Vec3& v) { return nearPlane.distance(v) > 0.0; }) &&

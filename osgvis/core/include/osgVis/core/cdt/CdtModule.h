@@ -60,6 +60,11 @@ public:
     ~CdtModule() override;
     const char* name() const override;
     void setScene(const Scene& scene) override;
+    /// Moved and inserted objects leave the hierarchy's answer and are tested on their own after
+    /// the walk, against everything drawn; no polygon resting on a changed object is drawn. A quarter
+    /// of the objects changed, or other stated occluders, rebuilds (docs/cdt.md, "Changes").
+    void sceneChanged(const SceneChange& change) override;
+    void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes) override;
     void cull(const View& view, VisibleSet& visible) override;
     /// Records the nodes where the traversal stopped (hidden, outside the frustum, visible leaves)
     /// and the occluder polygons drawn into the triangulation.
@@ -79,6 +84,7 @@ public:
         /// sibling out of front-to-back order): this frame kept every candidate.
         bool traversalStrayed = false;
         std::uint32_t triangles = 0; ///< in the triangulation at the end of the frame
+        std::uint32_t changedTested = 0; ///< objects moved or inserted since setScene, tested on their own
         double cullMs = 0.0;
     };
     Statistics lastStatistics() const;
