@@ -45,6 +45,8 @@ struct DrawablePlacement
 };
 DrawablePlacement placeDrawable(osg::Drawable& drawable, const osg::Matrixd& world, bool clockwiseFront,
                                 std::vector<core::Triangle>* triangles);
+// True when a triangle the drawable draws is a sliver (core::isSliverTriangle).
+bool hasSlivers(osg::Drawable& drawable);
 
 // `previous` with the objects below the `moved` transforms placed again (world matrix, bounds,
 // triangles), reported Moved and replacing it: a frame whose only change is matrices costs what moved,

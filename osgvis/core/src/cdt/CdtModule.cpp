@@ -169,12 +169,6 @@ void CdtModule::setScene(const Scene& scene)
     m.statedFrom = scene.occluders;
 }
 
-void CdtModule::sceneChanged(const SceneChange& change)
-{
-    if (_scene)
-        sceneReplaced(*_scene, {change});
-}
-
 void CdtModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes)
 {
     Impl& m = *_impl;

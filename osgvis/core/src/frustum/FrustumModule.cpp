@@ -75,12 +75,6 @@ void FrustumModule::cull(const View& view, VisibleSet& visible)
             visible.clear(id);
 }
 
-void FrustumModule::sceneChanged(const SceneChange& change)
-{
-    if (_scene)
-        sceneReplaced(*_scene, {change});
-}
-
 void FrustumModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes)
 {
     const auto nothing = [](ObjectId) {};

@@ -97,12 +97,6 @@ void MaskModule::setScene(const Scene& scene)
     m.statistics = Statistics();
 }
 
-void MaskModule::sceneChanged(const SceneChange& change)
-{
-    if (_scene)
-        sceneReplaced(*_scene, {change});
-}
-
 void MaskModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes)
 {
     Impl& m = *_impl;

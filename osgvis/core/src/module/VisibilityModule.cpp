@@ -3,10 +3,10 @@
 
 namespace osgVis::core
 {
-void VisibilityModule::sceneChanged(const SceneChange&)
+void VisibilityModule::sceneChanged(const SceneChange& change)
 {
     if (_scene)
-        setScene(*_scene);
+        sceneReplaced(*_scene, {change});
 }
 
 void VisibilityModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange>&)

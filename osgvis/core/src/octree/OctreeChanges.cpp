@@ -55,12 +55,6 @@ void OctreeModule::Impl::testMoved(const Scene& scene, const OctreeOptions& opti
     movedScratch.statistics = Statistics();
 }
 
-void OctreeModule::sceneChanged(const SceneChange& change)
-{
-    if (_scene)
-        sceneReplaced(*_scene, {change});
-}
-
 void OctreeModule::sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes)
 {
     if (!_scene || !_impl->applyChanges(scene, changes))

@@ -61,9 +61,9 @@ public:
     const char* name() const override;
     void setScene(const Scene& scene) override;
     /// Moved and inserted objects leave the hierarchy's answer and are tested on their own after
-    /// the walk, against everything drawn; no polygon resting on a changed object is drawn. A quarter
+    /// the walk, against the cover drawn with a depth bound; no polygon resting on a changed object
+    /// is drawn. A quarter
     /// of the objects changed, or other stated occluders, rebuilds (docs/cdt.md, "Changes").
-    void sceneChanged(const SceneChange& change) override;
     void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes) override;
     void cull(const View& view, VisibleSet& visible) override;
     /// Records the nodes where the traversal stopped (hidden, outside the frustum, visible leaves)

@@ -15,7 +15,6 @@ public:
     void setScene(const Scene& scene) override;
     /// Moved and inserted objects are tested on their own until a quarter of the objects changed
     /// (then the tree is rebuilt): time that grows with the change, not the scene.
-    void sceneChanged(const SceneChange& change) override;
     void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes) override;
     /// Never culls a visible object: keeps every object whose bounds are not entirely outside one
     /// frustum plane.

@@ -83,7 +83,6 @@ public:
     const char* name() const override;
     bool approximate() const override { return _options.shrink == MaskShrink::FusedUnion; }
     void setScene(const Scene& scene) override;
-    void sceneChanged(const SceneChange& change) override;
     void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes) override;
     void cull(const View& view, VisibleSet& visible) override;
     void setDebugRecord(DebugRecord* record) override;

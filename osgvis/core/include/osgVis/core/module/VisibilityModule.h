@@ -43,7 +43,8 @@ public:
     virtual void setBakedData(const BakedData& baked) { (void)baked; }
     /// Build phase: may allocate and take long. The scene outlives the module or the next setScene.
     virtual void setScene(const Scene& scene) = 0;
-    /// The scene (same object as given to setScene) changed; the default rebuilds.
+    /// The scene (same object as given to setScene) changed; the default hands the change to
+    /// sceneReplaced with that same scene (so a module that takes changes overrides that one only).
     virtual void sceneChanged(const SceneChange& change);
     /// The renderer re-extracted the scene into a new object (`scene`) in which every object kept its
     /// id; `changes` say which ids were inserted, moved or removed relative to the scene the module

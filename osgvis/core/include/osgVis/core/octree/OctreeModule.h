@@ -59,7 +59,6 @@ public:
     /// Moved and inserted objects are tested on their own and no polygon resting on a changed
     /// object occludes, in time that grows with the change; a quarter of the objects changed (or
     /// other stated occluders) rebuilds.
-    void sceneChanged(const SceneChange& change) override;
     void sceneReplaced(const Scene& scene, const std::vector<SceneChange>& changes) override;
     void cull(const View& view, VisibleSet& visible) override;
     /// Regions: the same traversal with every decision made for the whole box of eyes (a box is
