@@ -8,7 +8,7 @@ packages=(
     libopenscenegraph-dev openscenegraph
     libglfw3-dev libglm-dev libopenmesh-dev libtinygltf-dev libtbb-dev libembree-dev
     libgtest-dev libgmock-dev libbenchmark-dev libcgal-dev libgmp-dev libmpfr-dev libopenmpi-dev openmpi-bin
-    assimp-testmodels doxygen chromium openarena-081-maps unzip
+    assimp-testmodels doxygen chromium openarena-081-maps openarena-088-data unzip
     xvfb xauth x11-utils libgl1-mesa-dri mesa-utils
 )
 missing=()

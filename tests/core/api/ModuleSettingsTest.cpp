@@ -82,7 +82,7 @@ TEST(ModuleSettings, BadSettingsNameTheKeys)
     EXPECT_EQ(errorOf("octree:occluder=3"),
               "mode 'octree:occluder=3': no setting 'occluder' (settings: occluders, areaAngleThreshold, "
               "fuseConnected, fuseDisjoint, temporalCoherence, coplanarUnions, sweepAreaAngleThreshold, "
-              "occlusionTreeMaxNodes, maxLeafObjects, parallelMinObjects, sceneHierarchy)");
+              "occlusionTreeMaxNodes, maxLeafObjects, parallelMinObjects, sceneHierarchy, workBudget)");
     EXPECT_EQ(errorOf("octree:occluders=-3"), "mode 'octree:occluders=-3': bad value in 'occluders=-3' (e.g. occluders=32)");
     EXPECT_EQ(errorOf("mask:shrinkPixels=inf"), "mode 'mask:shrinkPixels=inf': bad value in 'shrinkPixels=inf' (e.g. shrinkPixels=2)");
     EXPECT_EQ(errorOf("octree:fuseDisjoint"), "mode 'octree:fuseDisjoint': bad value in 'fuseDisjoint' (e.g. fuseDisjoint=true)");

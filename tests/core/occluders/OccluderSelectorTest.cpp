@@ -182,14 +182,26 @@ TEST(OccluderSelector, LeafListsNeverMissAPolygonThatReachesTheThreshold)
                 eye = box.corner(trial / 5 % 8);
             ASSERT_TRUE(box.contains(eye));
             const auto& listed = selector.potentialOccluders(leaf);
-            ASSERT_TRUE(std::is_sorted(listed.begin(), listed.end()));
+            const auto& bounds = selector.potentialOccluderBounds(leaf);
+            // A leaf lists its polygons by their bound, largest first: a search stops on it.
+            if (leaf != 0)
+            {
+                ASSERT_EQ(bounds.size(), listed.size());
+                ASSERT_TRUE(std::is_sorted(bounds.rbegin(), bounds.rend()));
+            }
             for (std::uint32_t i = 0; i < polygons.size(); ++i)
             {
-                if (!(areaAngle(polygons[i], eye) >= threshold))
+                const double metric = areaAngle(polygons[i], eye);
+                if (!(metric >= threshold))
                     continue;
                 ++checked;
-                ASSERT_TRUE(std::binary_search(listed.begin(), listed.end(), i))
+                const auto at = std::find(listed.begin(), listed.end(), i);
+                ASSERT_TRUE(at != listed.end())
                     << "polygon " << i << " missing from leaf " << leaf << " at threshold " << threshold;
+                if (leaf != 0)
+                {
+                    ASSERT_GE(bounds[std::size_t(at - listed.begin())], metric) << "polygon " << i << " leaf " << leaf;
+                }
             }
         }
         EXPECT_GT(leavesSeen, 50u);

@@ -127,6 +127,7 @@ template <> const std::vector<Key<OctreeOptions>>& keysOf()
         field("maxLeafObjects", &O::maxLeafObjects),
         field("parallelMinObjects", &O::parallelMinObjects),
         field("sceneHierarchy", &O::sceneHierarchy),
+        field("workBudget", &O::workBudget),
     };
     return keys;
 }

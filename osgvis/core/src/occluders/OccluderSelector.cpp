@@ -147,6 +147,30 @@ void OccluderSelector::build(const std::vector<OccluderPolygon>& polygons, const
             pending.push({childLists[child].size(), firstChild + std::uint32_t(child), depth + 1});
         }
     }
+    sortLeafLists();
+}
+
+// Each leaf's list, best bound first: a query stops where the bounds fall below what it already has.
+// The root keeps index order and no bounds (it serves eyes outside the region, where none holds).
+void OccluderSelector::sortLeafLists()
+{
+    std::vector<std::pair<double, std::uint32_t>> ranked;
+    for (std::size_t index = 1; index < _cells.size(); ++index)
+    {
+        Cell& cell = _cells[index];
+        if (cell.firstChild != 0)
+            continue;
+        ranked.clear();
+        for (std::uint32_t p : cell.polygons)
+            ranked.push_back({-areaAngleBound((*_polygons)[p], cell.bounds), p});
+        std::sort(ranked.begin(), ranked.end());
+        cell.metricBounds.clear();
+        for (std::size_t i = 0; i < ranked.size(); ++i)
+        {
+            cell.polygons[i] = ranked[i].second;
+            cell.metricBounds.push_back(-ranked[i].first);
+        }
+    }
 }
 
 std::uint32_t OccluderSelector::leafOf(const Vec3& eye) const
@@ -170,6 +194,12 @@ const std::vector<std::uint32_t>& OccluderSelector::potentialOccluders(std::uint
     return leaf < _cells.size() ? _cells[leaf].polygons : emptyList();
 }
 
+const std::vector<double>& OccluderSelector::potentialOccluderBounds(std::uint32_t leaf) const
+{
+    static const std::vector<double> none;
+    return leaf < _cells.size() ? _cells[leaf].metricBounds : none;
+}
+
 const Aabb& OccluderSelector::leafBounds(std::uint32_t leaf) const
 {
     static const Aabb empty;
@@ -189,8 +219,14 @@ void OccluderSelector::select(const Vec3& eye, std::uint32_t k, std::vector<std:
     auto metricAt = [&](std::size_t slot)
     { return slot < CachedMetrics ? cached[slot] : areaAngle(polygons[out[slot]], eye); };
 
-    for (std::uint32_t p : _cells[leafOf(eye)].polygons)
+    const Cell& cell = _cells[leafOf(eye)];
+    for (std::size_t entry = 0; entry < cell.polygons.size(); ++entry)
     {
+        // No polygon further down the list can reach the threshold or beat the worst chosen one.
+        if (!cell.metricBounds.empty() && (cell.metricBounds[entry] < _threshold ||
+                                           (out.size() == k && cell.metricBounds[entry] < metricAt(k - 1))))
+            break;
+        const std::uint32_t p = cell.polygons[entry];
         const double metric = areaAngle(polygons[p], eye);
         if (!(metric >= _threshold))
             continue;

@@ -65,6 +65,7 @@ void OcclusionTree::reset(const Vec3& eye, const Vec3& forward, double sceneSize
     _leaves.clear();
     _occluders.clear();
     _root = Out;
+    _work = 0;
 }
 
 // Image of a point in front of the eye (false for one at, beside or behind it).
@@ -81,6 +82,7 @@ bool OcclusionTree::project(const Vec3& p, Point& image) const
 bool OcclusionTree::insert(const std::vector<Vec3>& vertices, const Plane& plane,
                            const std::vector<double>& edgeMargins)
 {
+    _work += 1 + vertices.size();
     const std::size_t n = vertices.size();
     if (n < 3 || edgeMargins.size() != n || !(plane.distance(_eye) > 0.0))
         return false;
@@ -163,8 +165,10 @@ void OcclusionTree::insertShrunkImage(const std::vector<Vec3>& polygon, std::uin
     _arena.assign(_image.begin(), _image.end());
     _fragments.clear();
     _fragments.push_back({Slot{-1, true}, 0, std::uint32_t(_image.size())});
+    ++_work;
     while (!_fragments.empty())
     {
+        ++_work;
         Fragment& top = _fragments.back();
         const Ref ref = at(top.slot);
         const Point* points = _arena.data() + top.begin;
@@ -271,6 +275,7 @@ bool OcclusionTree::hidden(const Vec3* points, std::size_t count, const Aabb& bo
 {
     if (_root == Out || count == 0 || bounds.empty())
         return false;
+    _work += 1 + count / 4;
     std::vector<Point>& image = _queryImage;
     image.resize(count);
     for (std::size_t i = 0; i < count; ++i)
@@ -286,6 +291,7 @@ bool OcclusionTree::hidden(const Vec3* points, std::size_t count, const Aabb& bo
     _queryStack.push_back({_root, 0, std::uint32_t(image.size())});
     while (!_queryStack.empty())
     {
+        ++_work;
         QueryRegion& top = _queryStack.back();
         if (top.ref == Out)
             return false;

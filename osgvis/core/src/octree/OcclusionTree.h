@@ -49,6 +49,9 @@ public:
     bool hidden(const Aabb& box, double depthTolerance) const;
 
     std::size_t nodeCount() const { return _nodes.size(); }
+    /// Steps taken since reset (fragments and query regions moved down a node, points projected):
+    /// a deterministic measure of the time inserting and querying took, for work budgets.
+    std::uint64_t work() const { return _work; }
     std::size_t occluderCount() const { return _occluders.size(); }
 
     /// Leaves hold at most this many occluders; a fragment that finds a full leaf is dropped.
@@ -116,6 +119,7 @@ private:
     std::vector<Leaf> _leaves;
     std::vector<Occluder> _occluders;
     Ref _root = Out;
+    mutable std::uint64_t _work = 0;
     // Scratch, kept between calls so that inserting and querying allocate nothing once grown.
     std::vector<Line> _edgeLines; // of the occluder being inserted
     std::vector<Point> _image, _clipped, _arena, _region;

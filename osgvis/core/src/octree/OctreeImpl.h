@@ -38,6 +38,29 @@ struct TraversalOutput
     std::vector<std::uint8_t> fusedTaken;
     std::vector<DebugRecord::Node> debugNodes;
     OctreeModule::Statistics statistics;
+    // Work units spent and allowed (OctreeOptions::workBudget); once a charge fails every later one
+    // does, so what was not reached stays visible. A box reached or an occluder tested against it
+    // weighs this many units: about what ten steps of the sweep's occlusion tree cost (fitted on
+    // 435 queries of four real levels, docs/octree.md "Budget").
+    static constexpr std::uint64_t BoxWork = 10;
+    std::uint64_t work = 0, budget = ~std::uint64_t(0);
+    bool charge(std::uint64_t units)
+    {
+        if (statistics.overBudget || units > budget - work)
+        {
+            statistics.overBudget = true;
+            return false;
+        }
+        work += units;
+        return true;
+    }
+    // The occluders a box is tested against: `candidates` while the budget lasts, none after, when
+    // the frustum alone decides (at what the `frustum` mode costs).
+    const std::vector<std::uint32_t>& deciding(const std::vector<std::uint32_t>& candidates)
+    {
+        static const std::vector<std::uint32_t> none;
+        return candidates.empty() || charge(BoxWork * (1 + candidates.size())) ? candidates : none;
+    }
 
     // Sized once for the tree's depth (see prepare): the traversal holds references into it.
     std::vector<std::uint32_t>& list(std::uint32_t depth) { return lists[depth]; }
@@ -107,6 +130,7 @@ struct OctreeModule::Impl
     std::vector<std::uint64_t> insertedAs; // per polygon: 2·stamp + (1 when flipped) if inserted this round
     std::vector<std::uint32_t> sweptIn;    // per polygon: the frame it joined the sweep's tree
     std::uint64_t insertStamp = 0;
+    std::uint64_t sweepBudget = ~std::uint64_t(0); // occlusion-tree work the sweep may spend this query
     std::vector<Vec3> insertVertices;
     std::vector<double> insertMargins;
 
@@ -126,7 +150,7 @@ struct OctreeModule::Impl
     void chooseFrontier(std::size_t wanted);
     std::size_t treeDepth() const;
     void traverse(const Scene& scene, const OctreeOptions& options, std::uint32_t node, std::uint32_t depth,
-                  unsigned planeMask, const std::vector<std::uint32_t>& occluders, TraversalOutput& out,
+                  unsigned planeMask, const std::vector<std::uint32_t>& candidates, TraversalOutput& out,
                   bool stopAtFrontier);
     Occlusion testBox(BoxOcclusionCache& cache, const Aabb& box, const std::vector<std::uint32_t>& occluders, bool fuse,
                       std::vector<std::uint32_t>& partial, TraversalOutput& out);

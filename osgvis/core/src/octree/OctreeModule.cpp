@@ -260,11 +260,21 @@ void OctreeModule::Impl::chooseRegionOccluders(const ViewRegion& region, std::ui
 template <class Usable> void OctreeModule::Impl::chooseBest(std::uint32_t k, Usable usable)
 {
     ranked.clear();
-    for (std::uint32_t o : selector.potentialOccluders(selector.leafOf(eye)))
+    const std::uint32_t leaf = selector.leafOf(eye);
+    const std::vector<std::uint32_t>& candidates = selector.potentialOccluders(leaf);
+    const std::vector<double>& bounds = selector.potentialOccluderBounds(leaf);
+    for (std::size_t i = 0; i < candidates.size(); ++i)
     {
+        // The list is ordered by a bound of the metric: nothing further down can enter the k best.
+        if (!bounds.empty() &&
+            (bounds[i] < threshold || (k > 0 && ranked.size() == k && bounds[i] < ranked.back().first)))
+            break;
+        const std::uint32_t o = candidates[i];
         const double metric = areaAngle(polygons[o], eye);
-        if (metric < threshold || (ranked.size() == k && metric <= ranked.back().first) || dependents.disabled(o) ||
-            !usable(o))
+        // Worse than the k-th best (a larger metric, or an equal one and a lower index, is better).
+        const bool worse = ranked.size() >= k && (k == 0 || metric < ranked.back().first ||
+                                                  (metric == ranked.back().first && o > ranked.back().second));
+        if (metric < threshold || worse || dependents.disabled(o) || !usable(o))
             continue;
         rank(o, metric, k);
     }
@@ -408,12 +418,13 @@ void OctreeModule::Impl::testObjects(const Scene& scene, const OctreeOptions& op
     {
         if (changed.changed(items[i]))
             continue; // testMoved's
+        const bool occludersDecide = !out.deciding(partial).empty();
         const Aabb& bounds = scene.objects[items[i]].bounds;
         unsigned objectMask = planeMask;
         NodeState state = NodeState::Visible;
         if (frustum->classify(bounds, objectMask) == Containment::Outside)
             state = NodeState::OutsideFrustum;
-        else if (!partial.empty() && testBox(objectCaches[items[i]], bounds, partial, options.fuseConnected,
+        else if (occludersDecide && testBox(objectCaches[items[i]], bounds, partial, options.fuseConnected,
                                              objectPartial, out) == Occlusion::Invisible)
             state = NodeState::Invisible;
         if (state != NodeState::Visible)
@@ -424,7 +435,7 @@ void OctreeModule::Impl::testObjects(const Scene& scene, const OctreeOptions& op
 }
 
 void OctreeModule::Impl::traverse(const Scene& scene, const OctreeOptions& options, std::uint32_t nodeIndex,
-                                  std::uint32_t depth, unsigned planeMask, const std::vector<std::uint32_t>& occluders,
+                                  std::uint32_t depth, unsigned planeMask, const std::vector<std::uint32_t>& candidates,
                                   TraversalOutput& out, bool stopAtFrontier)
 {
     const KdTree::Node& node = tree.nodes()[nodeIndex];
@@ -434,9 +445,10 @@ void OctreeModule::Impl::traverse(const Scene& scene, const OctreeOptions& optio
         task.active = true;
         task.depth = depth;
         task.planeMask = planeMask;
-        task.occluders = occluders;
+        task.occluders = candidates;
         return;
     }
+    const std::vector<std::uint32_t>& occluders = out.deciding(candidates);
     ++out.statistics.nodesVisited;
     const auto record = [&](NodeState state)
     {
@@ -603,13 +615,17 @@ void OctreeModule::Impl::traverseAll(const Scene& scene, const OctreeOptions& op
     serial.culled.clear();
     serial.debugNodes.clear();
     serial.statistics = Statistics();
+    serial.work = 0;
+    serial.budget = options.workBudget == 0 ? ~std::uint64_t(0) : options.workBudget / 5 * 3;
     if (sceneHierarchy.walks())
     {
         traverseHierarchy(scene, options);
         applyCulled(serial, sceneHierarchy.index().objects(), visible);
         return;
     }
-    const bool parallel = !frontier.empty() && !debug;
+    // A budget is spent in one fixed order, so that the same objects stay undecided at every
+    // thread count.
+    const bool parallel = !frontier.empty() && !debug && options.workBudget == 0;
     traverse(scene, options, 0, 0, rootPlaneMask, active, serial, parallel);
     if (parallel)
     {
@@ -622,6 +638,7 @@ void OctreeModule::Impl::traverseAll(const Scene& scene, const OctreeOptions& op
                     FrontierTask& task = frontier[i];
                     task.output.culled.clear();
                     task.output.statistics = Statistics();
+                    task.output.work = 0;
                     if (task.active)
                         traverse(scene, options, task.node, task.depth, task.planeMask, task.occluders, task.output,
                                  false);
@@ -651,6 +668,8 @@ void OctreeModule::Impl::applyCulled(const TraversalOutput& out, const std::vect
     statistics.planeTests += s.planeTests;
     statistics.cachedDecisions += s.cachedDecisions;
     statistics.nodesStrayed += s.nodesStrayed;
+    statistics.traversalWork += out.work;
+    statistics.overBudget = statistics.overBudget || s.overBudget;
 }
 
 // The renderer's traversal, with the tests of `traverse` on the recorded nodes. Its order does not
@@ -674,8 +693,9 @@ void OctreeModule::Impl::traverseHierarchy(const Scene& scene, const OctreeOptio
             out.lists.resize(depth + 2);
         if (planeMasks.size() < depth + 1)
             planeMasks.resize(depth + 1);
-        const std::vector<std::uint32_t>& occluders = depth == 0 ? active : out.lists[depth - 1];
+        const std::vector<std::uint32_t>& candidates = depth == 0 ? active : out.lists[depth - 1];
         unsigned planeMask = depth == 0 ? rootPlaneMask : planeMasks[depth - 1];
+        const std::vector<std::uint32_t>& occluders = out.deciding(candidates);
         ++out.statistics.nodesVisited;
         const auto record = [&](const Aabb& box, NodeState state, std::uint32_t at)
         {

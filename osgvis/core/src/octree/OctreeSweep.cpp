@@ -16,6 +16,9 @@ namespace osgVis::core
 void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const OctreeOptions& options, VisibleSet& visible)
 {
     occlusionTree.reset(eye, view.frustum.plane(Frustum::NEAR).normal, sceneSize);
+    // The budget's rest after the traversal; the objects the sweep does not reach stay visible.
+    sweepBudget = options.workBudget == 0 ? ~std::uint64_t(0)
+                                          : options.workBudget - std::min(options.workBudget, statistics.traversalWork);
     sweepOrder.clear();
     for (ObjectId id = 0; id < scene.objects.size(); ++id)
         if (visible.test(id) && (scene.objects[id].flags & OBJECT_ALWAYS_VISIBLE) == 0)
@@ -26,6 +29,11 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
     const std::uint32_t debugDepth = debug ? std::uint32_t(std::max<std::size_t>(treeDepth(), hierarchyDepth) + 1) : 0;
     for (const auto& [distance, id] : sweepOrder)
     {
+        if (occlusionTree.work() >= sweepBudget)
+        {
+            statistics.overBudget = true;
+            break;
+        }
         const Aabb& bounds = scene.objects[id].bounds;
         // A changed object's points are those of its old place: its box stands for it.
         const std::uint32_t first = pointsFirst[id], count = changed.changed(id) ? 0 : pointsFirst[id + 1] - first;
@@ -47,6 +55,7 @@ void OctreeModule::Impl::sweep(const Scene& scene, const View& view, const Octre
             !(largestPolygonArea[id] < threshold * distance * distance))
             insertPolygons(objectPolygons[id], view, options, true);
     }
+    statistics.sweepWork = occlusionTree.work();
     statistics.sweptTreeNodes = std::uint32_t(occlusionTree.nodeCount());
     statistics.sweptOccluders = std::uint32_t(occlusionTree.occluderCount());
 }
@@ -84,6 +93,8 @@ void OctreeModule::Impl::insertPolygons(const std::vector<std::uint32_t>& batch,
     {
         if (insertedAs[p] == 0)
             continue;
+        if (occlusionTree.work() >= sweepBudget)
+            break; // out of budget: fewer occluders only hide less
         const OccluderPolygon& polygon = polygons[p];
         const bool flipped = (insertedAs[p] & 1u) != 0;
         sweptIn[p] = frame;

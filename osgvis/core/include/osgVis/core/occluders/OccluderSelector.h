@@ -38,7 +38,12 @@ public:
 
     /// Leaf holding `eye` (root index 0 when outside the region).
     std::uint32_t leafOf(const Vec3& eye) const;
+    /// A leaf's list is ordered by an upper bound of each polygon's areaAngle over the leaf's box,
+    /// largest first (ties by index); the root's (eyes outside the region) is in index order.
     const std::vector<std::uint32_t>& potentialOccluders(std::uint32_t leaf) const;
+    /// Those bounds, one per entry of potentialOccluders(leaf), so that a search for the best
+    /// can stop early; empty where no bound holds (the root).
+    const std::vector<double>& potentialOccluderBounds(std::uint32_t leaf) const;
     const Aabb& leafBounds(std::uint32_t leaf) const;
 
     /// The k polygons of the eye leaf's list with the largest areaAngle at `eye` (at least the
@@ -52,7 +57,9 @@ private:
         Aabb bounds;
         std::uint32_t firstChild = 0; ///< 8 children from here; 0 for a leaf
         std::vector<std::uint32_t> polygons;
+        std::vector<double> metricBounds; ///< leaves but the root: per polygon its areaAngle bound, descending
     };
+    void sortLeafLists();
     const std::vector<OccluderPolygon>* _polygons = nullptr;
     std::vector<Cell> _cells;
     double _threshold = 0.0;

@@ -44,6 +44,13 @@ struct OctreeOptions
     std::uint32_t maxLeafObjects = 4;
     std::uint32_t parallelMinObjects = 256; ///< subtrees smaller than this run on the calling thread
     OccluderBuildOptions occluderBuild;
+    /// Work a query may do, in deterministic units (docs/octree.md, "Budget"): the traversal counts
+    /// ten units per box it reaches and per occluder the box is tested against, and takes at
+    /// most 3/5 of the budget; the sweep counts the occlusion tree's steps and takes the rest. What
+    /// the budget does not reach stays visible, so the answer stays conservative and the same
+    /// whatever the machine's load. A budget makes the traversal serial (a fixed order is what
+    /// makes the spent budget reproducible). 0: no limit.
+    std::uint64_t workBudget = 0;
     /// Walk the scene's TraversalHierarchy (when it has a usable one) instead of building a kd-tree.
     /// Its traversal runs on the calling thread (a renderer's callback is not split into tasks).
     bool sceneHierarchy = true;
@@ -80,6 +87,10 @@ public:
         std::uint32_t nodesStrayed = 0;
         /// Objects moved or inserted since the tree was built, tested on their own.
         std::uint32_t changedTested = 0;
+        /// Work units the traversal and the sweep spent (OctreeOptions::workBudget), and whether
+        /// the budget cut either short.
+        std::uint64_t traversalWork = 0, sweepWork = 0;
+        bool overBudget = false;
     };
     Statistics lastStatistics() const;
     /// True when the last setScene took the scene's hierarchy; else why not ("" when it had none).
