@@ -8,14 +8,15 @@ namespace osgVis::core
 {
 namespace
 {
-// Fraction of the frame that the box's projection covers, seen from `eye` with the view's
-// orientation; corners nearer than the near plane are pushed out to it along the view axis.
-double coverage(const MaskProjection& projection, const Aabb& box, const Vec3& shift)
+// Fraction of the frame that the box's projection covers, seen from an eye moved by `shift` (in eye
+// space) with the view's orientation; `corners` are the box's corners in eye space. Corners nearer
+// than the near plane are pushed out to it along the view axis.
+double coverage(const MaskProjection& projection, const Vec3 (&corners)[8], const Vec3& shift)
 {
     double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-    for (int i = 0; i < 8; ++i)
+    for (const Vec3& corner : corners)
     {
-        Vec3 eyeSpace = projection.toEye(box.corner(i) - shift);
+        Vec3 eyeSpace = corner - shift;
         eyeSpace.z = std::min(eyeSpace.z, -projection.nearPlane());
         const glm::dvec2 m = projection.toMask(eyeSpace);
         x0 = std::min(x0, m.x), y0 = std::min(y0, m.y);
@@ -28,16 +29,37 @@ double coverage(const MaskProjection& projection, const Aabb& box, const Vec3& s
     return cw * ch / (w * h);
 }
 
-double importance(const MaskSelectionInput& in, const Aabb& box)
+// The sampled eyes of the δ-ball (the eye, and δ away along each axis) as offsets in world and in
+// eye space (an eye moved by s sees every point moved by -R·s, R the view's rotation).
+struct EyeSamples
+{
+    int count = 1;
+    Vec3 world[7], eyeSpace[7];
+    explicit EyeSamples(const MaskSelectionInput& in)
+    {
+        const double r = in.sampleRadius;
+        const Vec3 offsets[7] = {Vec3(0.0), {r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}};
+        count = r > 0.0 ? 7 : 1;
+        const Vec3 origin = in.projection->toEye(Vec3(0.0));
+        for (int s = 0; s < count; ++s)
+        {
+            world[s] = offsets[s];
+            eyeSpace[s] = s == 0 ? Vec3(0.0) : in.projection->toEye(offsets[s]) - origin;
+        }
+    }
+};
+
+double importance(const MaskSelectionInput& in, const EyeSamples& samples, const Aabb& box)
 {
     if (in.measure == OccluderMeasure::Distance)
         return -box.distance(in.eye);
-    const double r = in.sampleRadius;
-    const Vec3 samples[7] = {Vec3(0.0), {r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}};
-    const int sampleCount = r > 0.0 ? 7 : 1;
+    Vec3 corners[8]; // in eye space, once for every sample
+    for (int i = 0; i < 8; ++i)
+        corners[i] = in.projection->toEye(box.corner(i));
     double phi = std::numeric_limits<double>::max();
-    for (int s = 0; s < sampleCount; ++s)
-        phi = std::min(phi, coverage(*in.projection, box, samples[s]) * box.distance(in.eye + samples[s]));
+    for (int s = 0; s < samples.count; ++s)
+        phi = std::min(phi, coverage(*in.projection, corners, samples.eyeSpace[s]) *
+                                box.distance(in.eye + samples.world[s]));
     return phi;
 }
 // Nearest nodes first (ties by node id), gathering the candidate objects each holds until there are
@@ -51,6 +73,7 @@ template <class Tree> void gatherCandidates(const MaskSelectionInput& in, const 
     std::vector<std::pair<double, ObjectId>>& candidates = scratch.candidates;
     queue.clear();
     candidates.clear();
+    const EyeSamples samples(in);
     const auto push = [&](std::uint32_t node)
     {
         queue.push_back({tree.bounds(node).distance(in.eye), node});
@@ -70,7 +93,7 @@ template <class Tree> void gatherCandidates(const MaskSelectionInput& in, const 
                              if (!(*in.usable)[id] || box.distance(in.eye) < in.minDistance ||
                                  in.view->frustum.classify(box) == Containment::Outside)
                                  return;
-                             candidates.push_back({importance(in, box), id});
+                             candidates.push_back({importance(in, samples, box), id});
                          });
         tree.forEachChild(top.node, push);
     }

@@ -88,9 +88,13 @@ std::optional<MaskRect> MaskProjection::project(const Aabb& box) const
     MaskRect rect{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
                   std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest(),
                   std::numeric_limits<double>::max()};
+    // The corners in eye space from one transformed corner and the three transformed edges.
+    const Vec3 base = toEye(box.min), extent = box.max - box.min;
+    const Vec3 edges[3] = {Vec3(_view[0]) * extent.x, Vec3(_view[1]) * extent.y, Vec3(_view[2]) * extent.z};
     for (int i = 0; i < 8; ++i)
     {
-        const Vec3 eye = toEye(box.corner(i));
+        const Vec3 eye = base + ((i & 1) ? edges[0] : Vec3(0.0)) + ((i & 2) ? edges[1] : Vec3(0.0)) +
+                         ((i & 4) ? edges[2] : Vec3(0.0));
         const double z = -eye.z;
         if (!(z > 0.5 * _near))
             return std::nullopt;
