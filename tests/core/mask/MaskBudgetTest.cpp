@@ -3,11 +3,11 @@
 // spends no more than it, keeps every object the rays see, hides a subset of what the unlimited
 // module hides, says when the budget cut it short, and answers the same on every run.
 #include "BoxScenes.h"
+#include "FirstQuery.h"
 #include "RayCastVisibility.h"
 
 #include <osgVis/core/mask/MaskModule.h>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 using namespace osgVis::core;
@@ -15,37 +15,13 @@ using namespace osgVis::test;
 
 namespace
 {
-std::vector<View> streetViews()
-{
-    const Mat4 projection = glm::perspective(glm::radians(60.0), 4.0 / 3.0, 0.1, 1000.0);
-    std::vector<View> views;
-    for (int f = 0; f < 6; ++f)
-    {
-        const double yaw = glm::radians(-20.0 + 8.0 * f);
-        const Vec3 eye(85.0, -8.0 + 25.0 * f, 1.7);
-        views.push_back(makeView(glm::lookAt(eye, eye + Vec3(std::sin(yaw), std::cos(yaw), -0.02), Vec3(0, 0, 1)),
-                                 projection, 0.0, 320, 240));
-    }
-    return views;
-}
+using Answer = FirstQuery<MaskModule>;
 
-struct Answer
-{
-    VisibleSet visible;
-    MaskModule::Statistics stats;
-};
-
-// A fresh module's first (critical) frame.
 Answer firstFrame(const Scene& scene, const View& view, std::uint64_t budget)
 {
     MaskOptions options;
     options.workBudget = budget;
-    MaskModule module(options);
-    module.setScene(scene);
-    Answer answer{VisibleSet(scene.objects.size(), true), {}};
-    module.cull(view, answer.visible);
-    answer.stats = module.lastStatistics();
-    return answer;
+    return firstQuery<MaskModule>(scene, view, options);
 }
 } // namespace
 
@@ -54,7 +30,7 @@ TEST(MaskBudget, NeverSpendsMoreThanItsBudgetAndOnlyHidesLess)
     const City city = makeCity();
     const RayCastVisibility rays(city.scene);
     std::size_t cutShort = 0, hiddenUnlimited = 0, hiddenSmall = 0;
-    for (const View& view : streetViews())
+    for (const View& view : cityStreetViews())
     {
         const RayCastResult seen = rays.cast(view);
         const Answer unlimited = firstFrame(city.scene, view, 0);

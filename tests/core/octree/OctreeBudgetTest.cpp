@@ -4,11 +4,11 @@
 // still decides what the budget does not reach), a budget that suffices changes nothing, the
 // module says when the budget cut a query short, and answers the same on every run.
 #include "BoxScenes.h"
+#include "FirstQuery.h"
 #include "RayCastVisibility.h"
 
 #include <osgVis/core/octree/OctreeModule.h>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
@@ -17,37 +17,13 @@ using namespace osgVis::test;
 
 namespace
 {
-// Along a street of the city and across it, looking down the blocks.
-std::vector<View> streetViews()
-{
-    const Mat4 projection = glm::perspective(glm::radians(60.0), 4.0 / 3.0, 0.1, 1000.0);
-    std::vector<View> views;
-    for (int f = 0; f < 6; ++f)
-    {
-        const double yaw = glm::radians(-20.0 + 8.0 * f);
-        const Vec3 eye(85.0, -8.0 + 25.0 * f, 1.7);
-        views.push_back(makeView(glm::lookAt(eye, eye + Vec3(std::sin(yaw), std::cos(yaw), -0.02), Vec3(0, 0, 1)),
-                                 projection, 0.0, 320, 240));
-    }
-    return views;
-}
-
-struct Answer
-{
-    VisibleSet visible;
-    OctreeModule::Statistics stats;
-};
+using Answer = FirstQuery<OctreeModule>;
 
 Answer query(const Scene& scene, const View& view, std::uint64_t budget)
 {
     OctreeOptions options;
     options.workBudget = budget;
-    OctreeModule module(options);
-    module.setScene(scene);
-    Answer answer{VisibleSet(scene.objects.size(), true), {}};
-    module.cull(view, answer.visible);
-    answer.stats = module.lastStatistics();
-    return answer;
+    return firstQuery<OctreeModule>(scene, view, options);
 }
 
 // Objects outside the view's frustum (by their boxes).
@@ -65,7 +41,7 @@ TEST(OctreeBudget, SpendsItsShareKeepsWhatTheRaysSeeAndStillCullsTheFrustum)
     const City city = makeCity();
     const RayCastVisibility rays(city.scene);
     std::size_t cutShort = 0, hiddenUnlimited = 0, hiddenSmall = 0;
-    for (const View& view : streetViews())
+    for (const View& view : cityStreetViews())
     {
         const RayCastResult seen = rays.cast(view);
         const Answer unlimited = query(city.scene, view, 0);
@@ -111,7 +87,7 @@ TEST(OctreeBudget, ABudgetedQueryIsTheSameAtEveryThreadCountAndOffByDefault)
 {
     EXPECT_EQ(OctreeOptions().workBudget, 0u);
     const City city = makeCity();
-    const View view = streetViews()[2];
+    const View view = cityStreetViews()[2];
     const Answer unlimited = query(city.scene, view, 0);
     const std::uint64_t budget = (unlimited.stats.traversalWork + unlimited.stats.sweepWork) / 3;
     const Answer reference = query(city.scene, view, budget);

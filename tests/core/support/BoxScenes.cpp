@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "BoxScenes.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 namespace osgVis::test
 {
 using namespace core;
@@ -78,4 +80,19 @@ City makeCity()
     return city;
 }
 
+
+std::vector<core::View> cityStreetViews()
+{
+    const core::Mat4 projection = glm::perspective(glm::radians(60.0), 4.0 / 3.0, 0.1, 1000.0);
+    std::vector<core::View> views;
+    for (int f = 0; f < 6; ++f)
+    {
+        const double yaw = glm::radians(-20.0 + 8.0 * f);
+        const core::Vec3 eye(85.0, -8.0 + 25.0 * f, 1.7);
+        views.push_back(core::makeView(
+            glm::lookAt(eye, eye + core::Vec3(std::sin(yaw), std::cos(yaw), -0.02), core::Vec3(0, 0, 1)), projection,
+            0.0, 320, 240));
+    }
+    return views;
+}
 } // namespace osgVis::test

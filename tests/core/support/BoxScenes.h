@@ -3,6 +3,7 @@
 // Scenes of axial boxes for core tests: box objects with their triangles, and a small city of
 // blocks, buildings and street furniture.
 #include <osgVis/core/scene/Scene.h>
+#include <osgVis/core/scene/View.h>
 
 #include <string>
 #include <vector>
@@ -31,4 +32,8 @@ struct City
 };
 
 City makeCity();
+
+// Six eyes walking up the city's street at x = 85 at a person's height, each turned a little more
+// (-20° to +20° from looking along it), 320 × 240, 60° high: the budget tests' views.
+std::vector<core::View> cityStreetViews();
 } // namespace osgVis::test
